@@ -1,0 +1,432 @@
+"""Bézier curves, polynomial and rational: chapter 2 of the notes.
+
+Control points are float arrays of shape (n+1, d). Rational curves live in
+homogeneous coordinates: `to_homogeneous` lifts each point to w*(x, 1), every
+algorithm runs on those (d+1)-dimensional points unchanged, and
+`from_homogeneous` projects back. Parameters are a number (one point of shape
+(d,) comes back) or a 1-D array of k values ((k, d) comes back).
+"""
+
+from __future__ import annotations
+
+from math import comb
+
+import numpy as np
+
+from ._validation import (
+    as_count,
+    as_interval,
+    as_parameter,
+    as_points,
+    as_scalar,
+    as_vector,
+    as_weights,
+)
+
+__all__ = [
+    "bernstein",
+    "bernstein_matrix",
+    "de_casteljau",
+    "de_casteljau_triangle",
+    "subdivide",
+    "elevate",
+    "hodograph",
+    "evaluate",
+    "derivative",
+    "curvature",
+    "signed_curvature",
+    "to_homogeneous",
+    "from_homogeneous",
+    "endpoint_derivatives",
+    "endpoint_curvature",
+    "circular_arc",
+    "reparametrize_weights",
+    "change_interval",
+    "explicit_bezier",
+    "explicit_rational_bezier",
+    "difference_bound",
+    "hausdorff_distance",
+    "directed_hausdorff",
+]
+
+
+def _local_parameter(t, interval) -> tuple[np.ndarray, bool]:
+    """Map t in `interval` to the local parameter of [0, 1], as a 1-D array."""
+    ts, scalar = as_parameter(t)
+    t0, t1 = as_interval(interval)
+    return (ts - t0) / (t1 - t0), scalar
+
+
+def bernstein(i: int, n: int, t):
+    """The Bernstein polynomial B_i^n(t) = C(n, i) (1-t)^(n-i) t^i; float for a number t, (k,) for an array. Notes §2.1."""
+    n = as_count(n, "n")
+    i = as_count(i, "i")
+    if i > n:
+        raise ValueError(f"i: expected 0 <= i <= n = {n}, got {i}")
+    ts, scalar = as_parameter(t)
+    values = comb(n, i) * (1 - ts) ** (n - i) * ts**i
+    return float(values[0]) if scalar else values
+
+
+def bernstein_matrix(n: int, t) -> np.ndarray:
+    """All degree-n Bernstein polynomials at k parameters: shape (k, n+1), rows sum to one. Notes §2.1."""
+    n = as_count(n, "n")
+    ts, _ = as_parameter(t)
+    i = np.arange(n + 1)
+    binomials = np.array([comb(n, j) for j in i], dtype=float)
+    return binomials * (1 - ts[:, None]) ** (n - i) * ts[:, None] ** i
+
+
+def de_casteljau_triangle(points, t) -> list[np.ndarray]:
+    """Every level of the de Casteljau triangle at a number t: level j has shape (n+1-j, d). Notes §2.3.
+
+    Level 0 is the control polygon, the last level the single point P(t).
+    Works for t outside [0, 1] too (extrapolation).
+    """
+    pts = as_points(points)
+    tau = as_scalar(t, "t")
+    levels = [pts]
+    while len(levels[-1]) > 1:
+        previous = levels[-1]
+        levels.append((1 - tau) * previous[:-1] + tau * previous[1:])
+    return levels
+
+
+def de_casteljau(points, t) -> np.ndarray:
+    """Point(s) of the Bézier curve on [0, 1] by repeated linear interpolation. Notes §2.3.
+
+    points: (n+1, d). t: a number -> (d,), or a 1-D array of k values -> (k, d).
+    All k parameters go through the triangle at once.
+    """
+    pts = as_points(points)
+    ts, scalar = as_parameter(t)
+    s = ts[:, None, None]
+    level = np.broadcast_to(pts, (len(ts),) + pts.shape)
+    for _ in range(len(pts) - 1):
+        level = (1 - s) * level[:, :-1] + s * level[:, 1:]
+    result = level[:, 0, :]
+    return result[0].copy() if scalar else result
+
+
+def subdivide(points, t=0.5) -> tuple[np.ndarray, np.ndarray]:
+    """Split a Bézier curve at parameter t into two curves of the same degree. Notes §2.3.
+
+    Returns (left, right), each (n+1, d): left covers [0, t] and right [t, 1],
+    each reparametrised to [0, 1]. For t outside [0, 1] the two pieces extend
+    the curve (the notes' subdivision at τ = 2).
+    """
+    levels = de_casteljau_triangle(points, t)
+    left = np.array([level[0] for level in levels])
+    right = np.array([level[-1] for level in reversed(levels)])
+    return left, right
+
+
+def elevate(points, times: int = 1) -> np.ndarray:
+    """Raise the degree by one (`times` times) without changing the curve: (n+1, d) -> (n+1+times, d). Notes §2.4.
+
+    P*_i = α_i P_{i-1} + (1 - α_i) P_i with α_i = i / (n+1).
+    """
+    pts = as_points(points)
+    times = as_count(times, "times")
+    for _ in range(times):
+        n = len(pts) - 1
+        alpha = (np.arange(n + 2) / (n + 1))[:, None]
+        padded_before = np.vstack([pts[:1], pts])
+        padded_after = np.vstack([pts, pts[-1:]])
+        pts = alpha * padded_before + (1 - alpha) * padded_after
+    return pts
+
+
+def hodograph(points, interval=(0, 1)) -> np.ndarray:
+    """Control points of the first derivative curve: n/(t1-t0) (P_{i+1} - P_i), shape (n, d). Notes §2.7.
+
+    The derivative of a degree-0 curve is the zero curve, returned as one zero point.
+    """
+    pts = as_points(points)
+    t0, t1 = as_interval(interval)
+    n = len(pts) - 1
+    if n == 0:
+        return np.zeros_like(pts)
+    return n / (t1 - t0) * np.diff(pts, axis=0)
+
+
+def to_homogeneous(points, weights) -> np.ndarray:
+    """Lift rational control points to homogeneous ones w_i (x_i, 1): (n+1, d) -> (n+1, d+1). Notes §2.9."""
+    pts = as_points(points)
+    w = as_weights(weights, len(pts))
+    return np.hstack([pts * w[:, None], w[:, None]])
+
+
+def from_homogeneous(homogeneous) -> tuple[np.ndarray, np.ndarray]:
+    """Project homogeneous points back: (n+1, d+1) -> (points (n+1, d), weights (n+1,)). Notes §2.9."""
+    h = as_points(homogeneous, "homogeneous")
+    if h.shape[1] < 2:
+        raise ValueError(f"homogeneous: expected at least 2 columns (coordinates and weight), got shape {h.shape}")
+    w = h[:, -1]
+    if np.any(w == 0):
+        raise ValueError(f"homogeneous: a zero weight is a point at infinity, got weights {w.tolist()}")
+    return h[:, :-1] / w[:, None], w.copy()
+
+
+def _project(homogeneous_values: np.ndarray, ts: np.ndarray) -> np.ndarray:
+    w = homogeneous_values[:, -1:]
+    if np.any(w == 0):
+        bad = ts[(w == 0).ravel()]
+        raise ValueError(f"t: the rational curve passes through infinity (zero weight) at t = {bad.tolist()}")
+    return homogeneous_values[:, :-1] / w
+
+
+def evaluate(points, t, weights=None, interval=(0, 1)) -> np.ndarray:
+    """Point(s) of a polynomial or rational Bézier curve defined over `interval`. Notes §2.2, §2.9.
+
+    points: (n+1, d); weights: None or (n+1,). t: a number -> (d,), or k values -> (k, d).
+    A rational curve is evaluated on its homogeneous control points and projected.
+    """
+    pts = as_points(points)
+    tau, scalar = _local_parameter(t, interval)
+    if weights is None:
+        values = de_casteljau(pts, tau)
+    else:
+        values = _project(de_casteljau(to_homogeneous(pts, weights), tau), tau)
+    return values[0] if scalar else values
+
+
+def _homogeneous_derivatives(h: np.ndarray, tau: np.ndarray, order: int, interval) -> list[np.ndarray]:
+    """Values of the homogeneous curve and its first `order` derivatives at tau, each (k, d+1)."""
+    values, curve = [], h
+    for _ in range(order + 1):
+        values.append(de_casteljau(curve, tau))
+        curve = hodograph(curve, interval)
+    return values
+
+
+def derivative(points, t, order: int = 1, weights=None, interval=(0, 1)) -> np.ndarray:
+    """The `order`-th derivative vector(s) dᵏP/dtᵏ of a (rational) Bézier curve over `interval`. Notes §2.7, §2.9.2.
+
+    Polynomial curves use repeated hodographs. A rational curve P = X / w is
+    differentiated by the Leibniz rule on X = w P:
+    P⁽ᵏ⁾ = (X⁽ᵏ⁾ - Σ_{j=1..k} C(k, j) w⁽ʲ⁾ P⁽ᵏ⁻ʲ⁾) / w.
+    """
+    pts = as_points(points)
+    order = as_count(order, "order")
+    tau, scalar = _local_parameter(t, interval)
+    h = pts if weights is None else to_homogeneous(pts, weights)
+    derivs = _homogeneous_derivatives(h, tau, order, interval)
+    if weights is not None:
+        w = [d[:, -1:] for d in derivs]
+        p = [_project(derivs[0], tau)]
+        for k in range(1, order + 1):
+            correction = sum(comb(k, j) * w[j] * p[k - j] for j in range(1, k + 1))
+            p.append((derivs[k][:, :-1] - correction) / w[0])
+        derivs = p
+    result = derivs[order]
+    return result[0] if scalar else result
+
+
+def signed_curvature(points, t, weights=None) -> np.ndarray | float:
+    """Signed curvature of a planar curve (positive where it turns left): (x'y'' - y'x'') / |P'|³. Notes §2.9.3.
+
+    Where the speed |P'| is zero (a cusp) the curvature is reported as infinite.
+    """
+    pts = as_points(points)
+    if pts.shape[1] != 2:
+        raise ValueError(f"points: signed curvature needs planar points of shape (n+1, 2), got {pts.shape}")
+    first, second = _first_two_derivatives(pts, t, weights)
+    cross = first[:, 0] * second[:, 1] - first[:, 1] * second[:, 0]
+    return _finish_curvature(cross, first, t)
+
+
+def curvature(points, t, weights=None) -> np.ndarray | float:
+    """Curvature |P' × P''| / |P'|³ of a (rational) Bézier curve in any dimension d >= 2. Notes §2.9.3.
+
+    points: (n+1, d). Returns a float for a number t, (k,) for k values.
+    Where the speed |P'| is zero (a cusp) the curvature is reported as infinite.
+    """
+    pts = as_points(points)
+    if pts.shape[1] < 2:
+        raise ValueError(f"points: curvature needs points of dimension >= 2, got shape {pts.shape}")
+    first, second = _first_two_derivatives(pts, t, weights)
+    # |v × a|² = |v|²|a|² - (v·a)² holds in every dimension (Lagrange's identity).
+    gram = np.einsum("ij,ij->i", first, first) * np.einsum("ij,ij->i", second, second)
+    gram -= np.einsum("ij,ij->i", first, second) ** 2
+    return _finish_curvature(np.sqrt(np.clip(gram, 0, None)), first, t)
+
+
+def _first_two_derivatives(pts, t, weights):
+    ts, _ = as_parameter(t)
+    return derivative(pts, ts, 1, weights), derivative(pts, ts, 2, weights)
+
+
+def _finish_curvature(numerator: np.ndarray, first: np.ndarray, t):
+    speed = np.linalg.norm(first, axis=1)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        kappa = np.where(speed > 0, numerator / np.where(speed > 0, speed, 1) ** 3, np.inf)
+    return float(kappa[0]) if np.ndim(t) == 0 else kappa
+
+
+def endpoint_derivatives(points, weights=None, interval=(0, 1)) -> tuple[np.ndarray, np.ndarray]:
+    """First and second derivative vectors at the start t0 from the first three control points. Notes (2.11), (2.12).
+
+    P'(t0) = n/(t1-t0) (w1/w0) (P1 - P0),
+    P''(t0) = n(n-1)/(t1-t0)² (w2/w0) (P2 - P0) - 2n/(t1-t0)² (w1/w0) ((n w1 - w0)/w0) (P1 - P0).
+    Needs degree n >= 2. Each result has shape (d,).
+    """
+    pts = as_points(points, min_count=3)
+    n = len(pts) - 1
+    w = np.ones(n + 1) if weights is None else as_weights(weights, n + 1)
+    t0, t1 = as_interval(interval)
+    h = t1 - t0
+    first = n / h * (w[1] / w[0]) * (pts[1] - pts[0])
+    second = n * (n - 1) / h**2 * (w[2] / w[0]) * (pts[2] - pts[0]) - 2 * n / h**2 * (w[1] / w[0]) * (
+        (n * w[1] - w[0]) / w[0]
+    ) * (pts[1] - pts[0])
+    return first, second
+
+
+def endpoint_curvature(points, weights=None) -> float:
+    """Curvature at t = 0 from the first three control points: ((n-1)/n) (w0 w2 / w1²) h / a². Notes (2.13).
+
+    a = |P1 - P0| is the length of the first leg and h the distance from P2 to the line P0 P1.
+    """
+    pts = as_points(points, min_count=3)
+    n = len(pts) - 1
+    w = np.ones(n + 1) if weights is None else as_weights(weights, n + 1)
+    leg = pts[1] - pts[0]
+    a2 = leg @ leg
+    if a2 == 0:
+        raise ValueError("points: P0 and P1 coincide, so the endpoint formula does not apply")
+    offset = pts[2] - pts[0]
+    h = np.sqrt(max(offset @ offset - (offset @ leg) ** 2 / a2, 0.0))
+    return float((n - 1) / n * w[0] * w[2] / w[1] ** 2 * h / a2)
+
+
+def circular_arc(center, radius, start_angle, sweep, degree: int = 2) -> tuple[np.ndarray, np.ndarray]:
+    """A circular arc as a rational Bézier curve: (points (degree+1, 2), weights). Notes §2.12.
+
+    Degree 2 has weights (1, cos(θ/2), 1) with the middle point where the end
+    tangents meet; degree 3 is its degree elevation, with inner weights
+    (1 + 2 cos(θ/2)) / 3. The sweep θ (radians, either sign) must satisfy 0 < |θ| < π.
+    """
+    c = as_points([center], "center")[0]
+    if c.shape != (2,):
+        raise ValueError(f"center: expected a 2-D point, got shape {c.shape}")
+    r = as_scalar(radius, "radius")
+    a = as_scalar(start_angle, "start_angle")
+    theta = as_scalar(sweep, "sweep")
+    degree = as_count(degree, "degree")
+    if r <= 0:
+        raise ValueError(f"radius: expected a positive radius, got {r}")
+    if not 0 < abs(theta) < np.pi:
+        raise ValueError(f"sweep: one rational quadratic covers 0 < |sweep| < π, got {theta}")
+    if degree not in (2, 3):
+        raise ValueError(f"degree: circular arcs are built in degree 2 or 3, got {degree}")
+    half = theta / 2
+    angles = np.array([a, a + half, a + theta])
+    radii = np.array([r, r / np.cos(half), r])
+    points = c + radii[:, None] * np.column_stack([np.cos(angles), np.sin(angles)])
+    weights = np.array([1.0, np.cos(half), 1.0])
+    if degree == 3:
+        return from_homogeneous(elevate(to_homogeneous(points, weights)))
+    return points, weights
+
+
+def reparametrize_weights(weights, b) -> np.ndarray:
+    """Weights after the rational-linear reparametrisation t = b u / ((1-u) + b u): w_i b^i. Notes §2.13.
+
+    The curve keeps its control points and endpoints; b > 0 only changes the
+    speed, b = -1 traces the complementary part of the curve (t outside [0, 1]).
+    """
+    w = as_vector(weights, "weights")
+    b = as_scalar(b, "b")
+    if b == 0:
+        raise ValueError("b: b = 0 collapses the curve to its first point")
+    return w * b ** np.arange(len(w))
+
+
+def change_interval(t, old, new):
+    """Map parameter(s) t of interval `old` to the matching parameter(s) of interval `new` (affine map). Notes §2.13.
+
+    P over [t0, t1] and Q over [s0, s1] with the same control points satisfy
+    P(t) = Q(change_interval(t, (t0, t1), (s0, s1))).
+    """
+    ts, scalar = as_parameter(t)
+    t0, t1 = as_interval(old, "old")
+    s0, s1 = as_interval(new, "new")
+    mapped = s0 + (ts - t0) * (s1 - s0) / (t1 - t0)
+    return float(mapped[0]) if scalar else mapped
+
+
+def explicit_bezier(coeffs, interval=(0, 1)) -> np.ndarray:
+    """Control points (t0 + i/n (t1-t0), c_i) of the explicit curve y = Σ c_i B_i^n, shape (n+1, 2). Notes §2.15.
+
+    A constant (n = 0) is raised to degree 1 so that x = t can be expressed.
+    """
+    c = as_vector(coeffs, "coeffs")
+    t0, t1 = as_interval(interval)
+    if len(c) == 1:
+        c = np.repeat(c, 2)
+    x = np.linspace(t0, t1, len(c))
+    return np.column_stack([x, c])
+
+
+def explicit_rational_bezier(coeffs, weights) -> tuple[np.ndarray, np.ndarray]:
+    """The explicit rational curve y = Σ w_i y_i B_i^n / Σ w_i B_i^n on [0, 1] as a degree n+1 rational Bézier curve. Notes §2.15.
+
+    x = t must share the denominator, so x = t Σ w_i B_i^n / Σ w_i B_i^n has
+    degree n+1 and y is degree-elevated to match. Returns (points (n+2, 2), weights (n+2,)).
+    """
+    y = as_vector(coeffs, "coeffs")
+    n = len(y) - 1
+    w = as_weights(weights, n + 1)
+    # t B_i^n = (i+1)/(n+1) B_{i+1}^{n+1}, so t w(t) has coefficients j w_{j-1} / (n+1).
+    x_numerator = np.concatenate([[0.0], np.arange(1, n + 2) / (n + 1) * w])
+    elevated = elevate(np.column_stack([w * y, w]))
+    return from_homogeneous(np.column_stack([x_numerator, elevated]))
+
+
+def _same_degree(p: np.ndarray, q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    if len(p) < len(q):
+        p = elevate(p, len(q) - len(p))
+    elif len(q) < len(p):
+        q = elevate(q, len(p) - len(q))
+    return p, q
+
+
+def difference_bound(p, q) -> float:
+    """Upper bound on max_t |P(t) - Q(t)|: the largest |P_i - Q_i| after raising both to one degree. Notes §2.6.
+
+    The difference curve D(t) = P(t) - Q(t) has control points P_i - Q_i and lies
+    in their convex hull, so no point of it is farther from the origin than they are.
+    """
+    p = as_points(p, "p")
+    q = as_points(q, "q")
+    if p.shape[1] != q.shape[1]:
+        raise ValueError(f"p, q: curves of different dimension {p.shape[1]} and {q.shape[1]}")
+    p, q = _same_degree(p, q)
+    return float(np.max(np.linalg.norm(p - q, axis=1)))
+
+
+def directed_hausdorff(p, q, samples: int = 1001) -> float:
+    """max over s of min over t of |P(s) - Q(t)|, both curves sampled at `samples` parameters. Notes (2.9).
+
+    Sampling makes this a lower bound that converges (error O(1/samples²) near
+    smooth closest points) to the exact one-sided distance as samples grows.
+    """
+    p = as_points(p, "p")
+    q = as_points(q, "q")
+    samples = as_count(samples, "samples", minimum=2)
+    ts = np.linspace(0, 1, samples)
+    a, b = de_casteljau(p, ts), de_casteljau(q, ts)
+    # Distances from each point of P to the polyline through Q's samples, not just
+    # its vertices, keep the error second order in the sample spacing.
+    seg = b[1:] - b[:-1]
+    rel = a[:, None, :] - b[None, :-1, :]
+    lengths = np.einsum("ij,ij->i", seg, seg)
+    u = np.clip(np.einsum("kij,ij->ki", rel, seg) / np.where(lengths > 0, lengths, 1), 0, 1)
+    closest = np.linalg.norm(rel - u[..., None] * seg, axis=2).min(axis=1)
+    return float(closest.max())
+
+
+def hausdorff_distance(p, q, samples: int = 1001) -> float:
+    """Symmetric Hausdorff distance max(d(P, Q), d(Q, P)) between two Bézier curves, by sampling. Notes §2.6."""
+    return max(directed_hausdorff(p, q, samples), directed_hausdorff(q, p, samples))
