@@ -1,0 +1,153 @@
+"""How results are told: the one-screen self-check text, the student's HTML feedback, Gradescope JSON."""
+
+from __future__ import annotations
+
+import html
+
+import numpy as np
+
+from .engine import CaseResult, ExerciseResult
+from .suite import Raises
+
+__all__ = ["exercise_summary", "check_text", "feedback_html", "gradescope_results", "status_of"]
+
+
+def _format_value(value, limit: int = 400) -> str:
+    if isinstance(value, Raises):
+        return f"raises {value.name}"
+    if isinstance(value, np.ndarray):
+        with np.printoptions(precision=6, suppress=True, threshold=40):
+            text = repr(value)
+    else:
+        text = repr(value)
+    return text if len(text) <= limit else text[: limit - 3] + "..."
+
+
+def _format_call(function: str, result: CaseResult) -> str:
+    case = result.case
+    parts = [_format_value(a, 200) for a in case.args]
+    parts += [f"{k}={_format_value(v, 200)}" for k, v in case.kwargs.items()]
+    return f"{function}({', '.join(parts)})"
+
+
+def exercise_summary(result: ExerciseResult) -> list[tuple[str, int, int, CaseResult | None]]:
+    """Per category: name, cases passed, cases in all, and the first failing case (None if all pass)."""
+    rows = []
+    for category, cases in result.categories().items():
+        failing = next((c for c in cases if not c.passed), None)
+        rows.append((category, sum(c.passed for c in cases), len(cases), failing))
+    return rows
+
+
+def _failure_detail(result: ExerciseResult, failing: CaseResult) -> list[str]:
+    lines = [f"      {failing.message}"]
+    if failing.visible and failing.case is not None:
+        function = result.id.split(".", 1)[1]
+        lines.append(f"      call:     {_format_call(function, failing)}")
+        lines.append(f"      expected: {_format_value(failing.expected)}")
+        if failing.received is not None:
+            lines.append(f"      received: {_format_value(failing.received)}")
+    return lines
+
+
+def check_text(result: ExerciseResult, load_problems: list[str] = (), skipped: list[str] = ()) -> str:
+    """The self-check report of one exercise: what passes, what fails, and what to fix next."""
+    rows = exercise_summary(result)
+    passed_groups = sum(1 for _, ok, total, _ in rows if ok == total)
+    lines = [f"{result.id}: {result.score:g} / {result.points:g} points ({passed_groups} of {len(rows)} groups of cases pass)"]
+    for category, ok, total, failing in rows:
+        mark = "PASS" if ok == total else "FAIL"
+        lines.append(f"  [{mark}] {category}: {ok}/{total}")
+        if failing is not None and failing is _first_failure(rows):
+            lines.extend(_failure_detail(result, failing))
+    lines.extend(f"  note: {p}" for p in list(load_problems) + list(skipped))
+    lines.append("")
+    lines.append(_next_step(result, rows))
+    return "\n".join(lines)
+
+
+def _first_failure(rows) -> CaseResult | None:
+    return next((failing for *_, failing in rows if failing is not None), None)
+
+
+def _next_step(result: ExerciseResult, rows) -> str:
+    failing = _first_failure(rows)
+    if failing is None:
+        return "All cases pass. Well done!"
+    if all(not c.passed and "NotImplementedError" in c.message for c in result.cases):
+        return "Not written yet: replace `raise NotImplementedError` in the function above, run that cell, then run this check again."
+    if result.stopped:
+        return f"Next: {result.stopped}. Look for a loop that never ends or a very slow step."
+    advice = f"Next: fix the first failing group, \"{failing.category}\"."
+    if result.hint:
+        advice += f"\nHint: {result.hint}"
+    return advice
+
+
+def status_of(results: list[ExerciseResult], problems: list[str]) -> str:
+    """One plain phrase for the gradebook: 'ok' or what went wrong, exercise by exercise."""
+    parts = []
+    for result in results:
+        if result.stopped:
+            parts.append(f"{result.id}: {result.stopped}")
+        elif result.cases and any("raised MemoryError" in c.message for c in result.cases):
+            parts.append(f"{result.id}: memory limit exceeded")
+    parts.extend(problems)
+    return "; ".join(parts) if parts else "ok"
+
+
+def feedback_html(name: str, results: list[ExerciseResult], score: float, max_score: float, notes: list[str]) -> str:
+    """A self-contained HTML page telling a student how each exercise went."""
+    esc = html.escape
+    body = [
+        f"<h1>Feedback for {esc(name)}</h1>",
+        f"<p class='total'>Score: <b>{score:g}</b> / {max_score:g}</p>",
+    ]
+    if notes:
+        body.append("<h2>Notes</h2><ul>" + "".join(f"<li>{esc(n)}</li>" for n in notes) + "</ul>")
+    for result in results:
+        body.append(f"<h2>{esc(result.id)} &mdash; {result.score:g} / {result.points:g}</h2>")
+        if result.stopped:
+            body.append(f"<p class='stopped'>{esc(result.stopped)}</p>")
+        body.append("<table><tr><th>cases</th><th>passed</th><th>first failure</th></tr>")
+        for category, ok, total, failing in exercise_summary(result):
+            detail = "" if failing is None else "<pre>" + esc("\n".join(_failure_detail(result, failing)).strip()) + "</pre>"
+            css = "pass" if ok == total else "fail"
+            body.append(f"<tr class='{css}'><td>{esc(category)}</td><td>{ok}/{total}</td><td>{detail}</td></tr>")
+        body.append("</table>")
+        if not result.passed and result.hint:
+            body.append(f"<p class='hint'>Hint: {esc(result.hint)}</p>")
+    style = (
+        "body{font-family:system-ui,sans-serif;max-width:60rem;margin:2rem auto;line-height:1.4}"
+        "table{border-collapse:collapse;width:100%}td,th{border:1px solid #ccc;padding:.3rem;vertical-align:top}"
+        "tr.pass td:nth-child(2){color:#1a7f37}tr.fail td:nth-child(2){color:#c0392b}"
+        "pre{white-space:pre-wrap;margin:0}.hint{color:#555}.stopped{color:#c0392b}"
+    )
+    return (
+        "<!DOCTYPE html><html lang='en'><head><meta charset='utf-8'>"
+        f"<title>Feedback: {esc(name)}</title><style>{style}</style></head><body>"
+        + "\n".join(body)
+        + "</body></html>\n"
+    )
+
+
+def gradescope_results(results: list[ExerciseResult], score: float, notes: list[str]) -> dict:
+    """The Gradescope autograder `results.json` structure: one test per exercise."""
+    tests = []
+    for result in results:
+        lines = [f"{category}: {ok}/{total}" for category, ok, total, _ in exercise_summary(result)]
+        if result.stopped:
+            lines.append(result.stopped)
+        failing = _first_failure(exercise_summary(result))
+        if failing is not None:
+            lines.extend(line.strip() for line in _failure_detail(result, failing))
+        tests.append(
+            {
+                "name": result.id,
+                "score": result.score,
+                "max_score": result.points,
+                "output": "\n".join(lines),
+                "visibility": "visible",
+            }
+        )
+    return {"score": score, "output": "\n".join(notes), "tests": tests}

@@ -1,0 +1,226 @@
+"""The student-side process of the grader: runs submitted functions on cases and reports the outputs.
+
+This file runs as a standalone script (``python -I -S worker.py FD``) in a fresh
+temporary folder, with a scrubbed environment, and must not import `cagd_ref`:
+the reference solutions are out of reach of the code it runs. The grader sends
+one JSON request on stdin (the submission's source as top-level statements,
+the allowed ``sys.path``, limits, and the cases of each exercise). The worker
+sends JSON lines back on file descriptor FD: one event per loaded submission,
+per exercise start, per case and per exercise end. Everything the student's
+code prints goes to stdout/stderr, which the grader captures separately.
+
+Only inputs travel to this process, never expected values; the grader compares
+the returned data in its own process, so nothing done here can raise a grade.
+The value codec below is shared with the grader, which imports this module.
+"""
+
+from __future__ import annotations
+
+import builtins
+import json
+import math
+import os
+import sys
+
+# Caps on what one returned value may cost the grader to read.
+MAX_ARRAY_SIZE = 1_000_000
+MAX_DEPTH = 16
+MAX_EVENT_BYTES = 8_000_000
+
+
+# --- value codec (plain JSON, never pickle: the grader must not unpickle student data) ---
+
+
+class Unsupported:
+    """A value the codec cannot carry (an object, a complex number, something huge): compared as wrong."""
+
+    def __init__(self, description: str):
+        self.description = description
+
+    def __repr__(self) -> str:
+        return self.description
+
+
+def encode(value, depth: int = 0):
+    """Turn numbers, strings, lists, tuples, dicts and NumPy arrays into JSON-ready data."""
+    if depth > MAX_DEPTH:
+        return {"__unsupported__": "a value nested too deeply"}
+    if value is None or isinstance(value, (bool, str)):
+        return value
+    if isinstance(value, int):
+        return value if abs(value) < 2**63 else float(value)
+    if isinstance(value, float):
+        return value if math.isfinite(value) else {"__float__": repr(value)}
+    np = sys.modules.get("numpy")
+    if np is not None:
+        if isinstance(value, np.generic):
+            return encode(value.item(), depth + 1)
+        if isinstance(value, np.ndarray):
+            return _encode_array(value, depth)
+    if isinstance(value, list):
+        return [encode(v, depth + 1) for v in value[:MAX_ARRAY_SIZE]]
+    if isinstance(value, tuple):
+        return {"__tuple__": [encode(v, depth + 1) for v in value[:MAX_ARRAY_SIZE]]}
+    if isinstance(value, dict) and all(isinstance(k, str) for k in value):
+        return {"__dict__": {k: encode(v, depth + 1) for k, v in value.items()}}
+    return {"__unsupported__": f"a {type(value).__name__} object"}
+
+
+def _encode_array(array, depth: int):
+    if array.size > MAX_ARRAY_SIZE:
+        return {"__unsupported__": f"an array of {array.size} entries (too large)"}
+    if array.dtype.kind in "biuf":
+        flat = [encode(float(x)) if array.dtype.kind == "f" else x for x in array.ravel().tolist()]
+        return {"__ndarray__": flat, "dtype": array.dtype.kind, "shape": list(array.shape)}
+    if array.dtype.kind == "O":
+        return {"__objects__": [encode(v, depth + 1) for v in array.ravel().tolist()], "shape": list(array.shape)}
+    return {"__unsupported__": f"an array of dtype {array.dtype}"}
+
+
+def decode(data):
+    """Inverse of `encode` (NumPy is imported lazily so the codec costs nothing until arrays appear)."""
+    if isinstance(data, list):
+        return [decode(v) for v in data]
+    if not isinstance(data, dict):
+        return data
+    if "__float__" in data:
+        return float(data["__float__"])
+    if "__tuple__" in data:
+        return tuple(decode(v) for v in data["__tuple__"])
+    if "__dict__" in data:
+        return {k: decode(v) for k, v in data["__dict__"].items()}
+    if "__ndarray__" in data:
+        import numpy as np
+
+        dtype = {"b": bool, "i": np.int64, "u": np.uint64, "f": float}.get(data.get("dtype"), float)
+        values = [decode(v) for v in data["__ndarray__"]]
+        return np.array(values, dtype=dtype).reshape(data["shape"])
+    if "__objects__" in data:
+        import numpy as np
+
+        values = np.empty(len(data["__objects__"]), dtype=object)
+        values[:] = [decode(v) for v in data["__objects__"]]
+        return values.reshape(data["shape"])
+    if "__unsupported__" in data:
+        return Unsupported(str(data["__unsupported__"]))
+    return Unsupported("an unrecognised value")
+
+
+# --- running the submission ---
+
+
+def error_record(err: BaseException) -> dict:
+    """Name and message of an exception; subclasses report the built-in they derive from."""
+    name = type(err).__name__
+    for cls in type(err).__mro__:
+        if cls.__module__ == "builtins":
+            name = cls.__name__
+            break
+    try:
+        message = str(err)[:500]
+    except Exception:  # a student exception whose __str__ fails
+        message = "(message could not be shown)"
+    return {"type": name, "message": message}
+
+
+class _ReferenceBlocker:
+    """Refuses imports of the reference package, whatever route the import takes."""
+
+    def find_spec(self, name, path=None, target=None):
+        if name == "cagd_ref" or name.startswith("cagd_ref."):
+            raise ImportError("the reference package cagd_ref is not available while grading")
+        return None
+
+
+def load_submission(statements: list[dict], namespace: dict) -> list[str]:
+    """Execute each top-level statement on its own, so one broken import does not lose the rest."""
+    problems = []
+    for statement in statements:
+        try:
+            code = compile(statement["source"], f"<{statement['where']}>", "exec")
+            exec(code, namespace)
+        except BaseException as err:  # noqa: BLE001 - anything a submission raises is reported, not fatal
+            record = error_record(err)
+            problems.append(f"{statement['where']}: {record['type']}: {record['message']}")
+    return problems
+
+
+def run_case(function, case: dict) -> dict:
+    """Call the student's function on one case; report its value (or exception) and the inputs afterwards."""
+    args = decode(case["args"])
+    kwargs = decode(case["kwargs"])
+    try:
+        outcome = {"value": encode(function(*args, **kwargs))}
+    except BaseException as err:  # noqa: BLE001 - SystemExit and friends count as failures of this case
+        outcome = {"raised": error_record(err)}
+    outcome["args_after"] = encode(list(args))
+    return outcome
+
+
+class Channel:
+    """JSON lines to the grader on a file descriptor the submission's prints never touch."""
+
+    def __init__(self, fd: int):
+        self.fd = fd
+
+    def send(self, event: dict) -> None:
+        line = json.dumps(event, allow_nan=True)
+        if len(line) > MAX_EVENT_BYTES:
+            event = {k: v for k, v in event.items() if k not in ("value", "args_after")}
+            event["value"] = {"__unsupported__": "a result too large to send back"}
+            line = json.dumps(event)
+        data = (line + "\n").encode()
+        while data:
+            written = os.write(self.fd, data)
+            data = data[written:]
+
+
+def apply_sandbox(policy: dict) -> None:
+    """Confine this process before any submitted code runs: memory, file size, no core dumps."""
+    import resource
+
+    for limit, value in (
+        (resource.RLIMIT_AS, policy["memory_bytes"]),
+        (resource.RLIMIT_FSIZE, policy["file_bytes"]),
+        (resource.RLIMIT_CORE, 0),
+    ):
+        resource.setrlimit(limit, (value, value))
+
+
+def serve(request: dict, channel: Channel) -> None:
+    """Load the submission and run every task of the request, reporting as it goes."""
+    sys.path[:] = request["path"]
+    # NumPy is imported before the limits so its start-up cost is not the student's,
+    # and before any submitted code so the codec uses the real module.
+    import numpy  # noqa: F401
+
+    apply_sandbox(request["sandbox"])
+    if not request.get("allow_reference"):
+        sys.meta_path.insert(0, _ReferenceBlocker())
+    namespace = {"__name__": "__submission__", "__builtins__": builtins}
+    problems = load_submission(request["statements"], namespace)
+    channel.send({"event": "loaded", "problems": problems})
+    for task in request["tasks"]:
+        channel.send({"event": "start", "exercise": task["exercise"]})
+        function = namespace.get(task["function"])
+        for index, case in enumerate(task["cases"]):
+            if callable(function):
+                outcome = run_case(function, case)
+            else:
+                outcome = {"missing": f"no function named {task['function']} is defined"}
+            channel.send({"event": "case", "exercise": task["exercise"], "index": index, **outcome})
+        channel.send({"event": "end", "exercise": task["exercise"]})
+    channel.send({"event": "done"})
+
+
+def main(argv: list[str]) -> int:
+    channel = Channel(int(argv[1]))
+    request = json.loads(sys.stdin.read())
+    sys.stdin.close()
+    serve(request, channel)
+    # Skip interpreter teardown: a submission's atexit hooks or finalizers must not run after reporting.
+    os._exit(0)
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
