@@ -72,11 +72,15 @@ def _allowed_path(allow_reference: bool) -> list[str]:
 
     Trusted runs (validating the reference itself) get the course checkout instead.
     """
-    allowed = [str(COURSE_ROOT)] if allow_reference else []
+    if allow_reference:
+        return [str(COURSE_ROOT)] + [entry for entry in sys.path if entry and os.path.isdir(entry)]
+    allowed = []
     for entry in sys.path:
-        if not entry or not os.path.isdir(entry):
+        if not entry or not os.path.isdir(entry) or os.path.exists(os.path.join(entry, "cagd_ref")):
             continue
-        if os.path.exists(os.path.join(entry, "cagd_ref")):
+        inside_course = Path(entry).resolve().is_relative_to(COURSE_ROOT)
+        # The course checkout (hidden suites, reference) stays out of reach; its .venv may not.
+        if inside_course and not Path(entry).resolve().is_relative_to(Path(sys.prefix).resolve()):
             continue
         allowed.append(entry)
     return allowed
@@ -135,12 +139,13 @@ class _Session:
         )
         os.close(write_fd)
         self.events = os.fdopen(read_fd, "rb", buffering=0)
+        path = _allowed_path(allow_reference)
         request = {
             "statements": statements,
             "tasks": [{"exercise": t.exercise, "function": t.function, "cases": t.cases} for t in tasks],
-            "path": _allowed_path(allow_reference),
+            "path": path,
             "allow_reference": allow_reference,
-            "sandbox": sandbox.policy(self.workdir, limits.memory_mb, allow_reference),
+            "sandbox": sandbox.policy(self.workdir, limits.memory_mb, path, allow_reference),
         }
         try:
             self.proc.stdin.write(json.dumps(request).encode())

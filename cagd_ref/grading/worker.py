@@ -175,8 +175,77 @@ class Channel:
             data = data[written:]
 
 
-def apply_sandbox(policy: dict) -> None:
-    """Confine this process before any submitted code runs: memory, file size, no core dumps."""
+# Landlock (Linux >= 5.13) filesystem rights, by the ABI version that introduced them.
+_FS_EXECUTE, _FS_WRITE_FILE, _FS_READ_FILE, _FS_READ_DIR = 1 << 0, 1 << 1, 1 << 2, 1 << 3
+_FS_RIGHTS_BY_ABI = {1: (1 << 13) - 1, 2: 1 << 13, 3: 1 << 14, 5: 1 << 15}
+_SYS_CREATE_RULESET, _SYS_ADD_RULE, _SYS_RESTRICT_SELF = 444, 445, 446  # the same on every architecture
+_PR_SET_NO_NEW_PRIVS = 38
+
+
+def _landlock(readable: list[str], writable: list[str]) -> str:
+    """Allow reading only beneath `readable`, writing only beneath `writable`; no TCP, no signals out.
+
+    Returns what was applied, for the record; kernels without Landlock keep the rlimits only.
+    """
+    import ctypes
+
+    libc = ctypes.CDLL(None, use_errno=True)
+    syscall = libc.syscall
+    syscall.restype = ctypes.c_long
+    abi = syscall(_SYS_CREATE_RULESET, None, ctypes.c_size_t(0), ctypes.c_uint32(1))
+    if abi < 1:
+        return "landlock unavailable"
+    fs_rights = sum(bits for version, bits in _FS_RIGHTS_BY_ABI.items() if abi >= version)
+
+    class RulesetAttr(ctypes.Structure):
+        _fields_ = [("fs", ctypes.c_uint64), ("net", ctypes.c_uint64), ("scoped", ctypes.c_uint64)]
+
+    class PathBeneath(ctypes.Structure):
+        _pack_ = 1
+        _fields_ = [("allowed", ctypes.c_uint64), ("parent_fd", ctypes.c_int32)]
+
+    # ABI 4 added TCP bind/connect rights, ABI 6 signal and abstract-socket scoping.
+    size = 8 if abi < 4 else 16 if abi < 6 else 24
+    attr = RulesetAttr(fs_rights, 0b11 if abi >= 4 else 0, 0b11 if abi >= 6 else 0)
+    ruleset = syscall(_SYS_CREATE_RULESET, ctypes.byref(attr), ctypes.c_size_t(size), ctypes.c_uint32(0))
+    if ruleset < 0:
+        return "landlock refused the ruleset"
+    rules = [(p, _FS_EXECUTE | _FS_READ_FILE | _FS_READ_DIR) for p in readable]
+    rules += [(p, fs_rights) for p in writable]
+    rules.append(("/dev/null", _FS_READ_FILE | _FS_WRITE_FILE))
+    for path, rights in rules:
+        try:
+            fd = os.open(path, os.O_PATH | os.O_CLOEXEC)
+        except OSError:
+            continue
+        if not os.path.isdir(path):
+            rights &= _FS_EXECUTE | _FS_READ_FILE | _FS_WRITE_FILE | (1 << 14) | (1 << 15)
+        rule = PathBeneath(rights & fs_rights, fd)
+        syscall(_SYS_ADD_RULE, ctypes.c_int(ruleset), ctypes.c_int(1), ctypes.byref(rule), ctypes.c_uint32(0))
+        os.close(fd)
+    libc.prctl(_PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0)
+    if syscall(_SYS_RESTRICT_SELF, ctypes.c_int(ruleset), ctypes.c_uint32(0)) != 0:
+        return "landlock could not be enforced"
+    os.close(ruleset)
+    return f"landlock ABI {abi}"
+
+
+def _drop_capabilities() -> None:
+    """Give up every capability, so a grader running as root cannot lend its powers (e.g. raising limits)."""
+    import ctypes
+
+    class Header(ctypes.Structure):
+        _fields_ = [("version", ctypes.c_uint32), ("pid", ctypes.c_int)]
+
+    class Data(ctypes.Structure):
+        _fields_ = [("effective", ctypes.c_uint32), ("permitted", ctypes.c_uint32), ("inheritable", ctypes.c_uint32)]
+
+    libc = ctypes.CDLL(None, use_errno=True)
+    libc.capset(ctypes.byref(Header(0x20080522, 0)), ctypes.byref((Data * 2)()))
+
+
+def apply_sandbox(policy: dict) -> str:
+    """Confine this process before any submitted code runs; return a note of what was applied."""
     import resource
 
     for limit, value in (
@@ -185,6 +254,11 @@ def apply_sandbox(policy: dict) -> None:
         (resource.RLIMIT_CORE, 0),
     ):
         resource.setrlimit(limit, (value, value))
+    if policy.get("trusted"):
+        return "rlimits"
+    note = _landlock(policy["readable"], [policy["workdir"]])
+    _drop_capabilities()
+    return note
 
 
 def serve(request: dict, channel: Channel) -> None:
@@ -194,12 +268,12 @@ def serve(request: dict, channel: Channel) -> None:
     # and before any submitted code so the codec uses the real module.
     import numpy  # noqa: F401
 
-    apply_sandbox(request["sandbox"])
+    sandbox_note = apply_sandbox(request["sandbox"])
     if not request.get("allow_reference"):
         sys.meta_path.insert(0, _ReferenceBlocker())
     namespace = {"__name__": "__submission__", "__builtins__": builtins}
     problems = load_submission(request["statements"], namespace)
-    channel.send({"event": "loaded", "problems": problems})
+    channel.send({"event": "loaded", "problems": problems, "sandbox": sandbox_note})
     for task in request["tasks"]:
         channel.send({"event": "start", "exercise": task["exercise"]})
         function = namespace.get(task["function"])
