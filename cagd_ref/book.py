@@ -97,7 +97,7 @@ def build_book(out: Path | str = "_build/html", chapters: list[int] | None = Non
     selected = [c for c in course.chapters if chapters is None or c.number in chapters]
     exporter = HTMLExporter(template_name="lab")
     pages: list[BuiltPage] = []
-    for chapter in tqdm(selected, desc="building the book", unit="chapter", disable=not progress):
+    for chapter in tqdm(selected, desc="building the book", unit="chapter", disable=None if progress else True):
         pages.extend(_build_chapter(chapter, out, exporter, timeout))
     (out / "index.html").write_text(_index(course, pages), encoding="utf-8")
     return pages

@@ -72,7 +72,7 @@ def _cmd_validate(args) -> int:
 def _cmd_grade(args) -> int:
     from .grading.classroom import grade_class
 
-    summary = grade_class(args.paths, args.out, args.jobs, _limits(args), args.seed, args.force)
+    summary = grade_class(args.paths, args.out, args.jobs, _limits(args), args.seed, args.force, chapters=args.chapter)
     print(summary)
     print(f"gradebook: {Path(args.out) / 'gradebook.csv'}; feedback: {Path(args.out)}/<submission>/feedback.html")
     return 0
@@ -125,6 +125,9 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--out", type=Path, required=True, help="output folder (gradebook.csv, <submission>/...)")
     p.add_argument("--jobs", type=int, default=1, help="submissions graded in parallel (default 1)")
     p.add_argument("--force", action="store_true", help="regrade submissions already in the gradebook")
+    p.add_argument(
+        "--chapter", type=int, action="append", metavar="N", help="grade only chapter N's exercises (repeatable; default all)"
+    )
     _add_limits(p)
     p.set_defaults(run=_cmd_grade)
 

@@ -50,6 +50,11 @@ def test_at_least_ten_exercises_in_chapters_one_and_two():
     assert len([e for e in COURSE.exercise_points() if e[:2] in ("01", "02")]) >= 10
 
 
+def _conda_dependencies() -> list[str]:
+    text = (ROOT / "environment.yml").read_text()
+    return re.findall(r"^\s+-\s+(\S+)", text.split("dependencies:", 1)[1], flags=re.M)
+
+
 def _name(requirement: str) -> str:
     return re.split(r"[<>=!;\s\[]", requirement, maxsplit=1)[0].lower().replace("_", "-")
 
@@ -59,8 +64,7 @@ def test_environment_yml_and_pyproject_name_the_same_dependencies():
     required = project["dependencies"] + [r for extra in project["optional-dependencies"].values() for r in extra]
     # Back-ports needed only on older Pythons (markers) have no conda counterpart.
     pip_names = {_name(r) for r in required if "python_version" not in r}
-    conda_lines = re.findall(r"^\s+-\s+(\S+)", (ROOT / "environment.yml").read_text(), flags=re.M)
-    conda_names = {_name(r) for r in conda_lines} - {"python"}
+    conda_names = {_name(r) for r in _conda_dependencies()} - {"python"}
     assert pip_names == conda_names
 
 
@@ -68,6 +72,6 @@ def test_lower_bounds_match_between_the_two_files():
     project = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]
     required = project["dependencies"] + [r for extra in project["optional-dependencies"].values() for r in extra]
     pip_bounds = {_name(r): r.split(">=")[1] for r in required if ">=" in r and "python_version" not in r}
-    conda = dict(re.findall(r"^\s+-\s+([\w-]+)>=(\S+)", (ROOT / "environment.yml").read_text(), flags=re.M))
+    conda = dict(r.split(">=") for r in _conda_dependencies() if ">=" in r)
     conda.pop("python", None)
     assert pip_bounds == conda

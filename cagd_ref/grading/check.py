@@ -29,9 +29,17 @@ def session_cells(function=None) -> list[str]:
     shell = get_ipython() if get_ipython else None
     if shell is not None and shell.user_ns.get("In"):
         return [cell for cell in shell.user_ns["In"] if cell]
-    if function is not None:
-        return [inspect.getsource(function)]
-    return []
+    if function is None:
+        return []
+    # Outside Jupyter, the whole file the function lives in carries its imports and helpers.
+    module = inspect.getmodule(function)
+    try:
+        return [inspect.getsource(module)] if module is not None else [inspect.getsource(function)]
+    except (OSError, TypeError):
+        raise ValueError(
+            f"check: cannot find the source code of {getattr(function, '__name__', function)!r}; "
+            "define it in a notebook cell or a .py file"
+        ) from None
 
 
 def check(exercise_id: str, function=None, limits: Limits | None = None) -> None:

@@ -152,13 +152,22 @@ class ClassSummary:
         )
 
 
-def grade_class(paths, out, jobs: int = 1, limits: Limits = Limits(), seed: int = 0, force: bool = False, progress: bool = True) -> ClassSummary:
-    """Grade every submission under `paths` into `out`; resume unless `force`."""
+def grade_class(
+    paths,
+    out,
+    jobs: int = 1,
+    limits: Limits = Limits(),
+    seed: int = 0,
+    force: bool = False,
+    progress: bool = True,
+    chapters: list[int] | None = None,
+) -> ClassSummary:
+    """Grade every submission under `paths` into `out` (on the exercises of `chapters`, default all); resume unless `force`."""
     started = time.monotonic()
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
     course = load_course()
-    exercises = load_exercises(course)
+    exercises = load_exercises(course, _chapter_ids(course, chapters))
     ids = list(exercises)
     header = ["submission", "score", "max_score", "status"] + ids + ["seed"]
     submissions = collect_submissions(paths)
@@ -167,7 +176,7 @@ def grade_class(paths, out, jobs: int = 1, limits: Limits = Limits(), seed: int 
     todo = {name: path for name, path in submissions.items() if name not in rows}
     new_rows: list[GradeRow] = []
     with ThreadPoolExecutor(max_workers=max(1, jobs)) as pool, tqdm(
-        total=len(todo), desc="grading", unit="submission", disable=not progress
+        total=len(todo), desc="grading", unit="submission", disable=None if progress else True
     ) as bar:
         futures = {pool.submit(grade_one, name, path, exercises, seed, limits, out): name for name, path in todo.items()}
         for future in as_completed(futures):
@@ -179,6 +188,16 @@ def grade_class(paths, out, jobs: int = 1, limits: Limits = Limits(), seed: int 
     if not todo:
         atomic_write(gradebook, _gradebook_text(header, rows))
     return _summary(new_rows, len(submissions) - len(todo), sum(p for _, p in exercises.values()), started)
+
+
+def _chapter_ids(course, chapters: list[int] | None) -> list[str] | None:
+    if not chapters:
+        return None
+    known = {c.number for c in course.chapters}
+    unknown = sorted(set(chapters) - known)
+    if unknown:
+        raise ValueError(f"no chapter {unknown} in book.toml (chapters: {sorted(known)})")
+    return [eid for c in course.chapters if c.number in chapters for eid in c.exercise_points]
 
 
 def _summary(rows: list[GradeRow], skipped: int, max_score: float, started: float) -> ClassSummary:

