@@ -90,8 +90,10 @@ def status_of(results: list[ExerciseResult], problems: list[str]) -> str:
     for result in results:
         if result.stopped:
             parts.append(f"{result.id}: {result.stopped}")
-        elif result.cases and any("raised MemoryError" in c.message for c in result.cases):
+        elif any(c.message.startswith("raised MemoryError") for c in result.cases):
             parts.append(f"{result.id}: memory limit exceeded")
+        elif any(c.message.startswith("raised SystemExit") for c in result.cases):
+            parts.append(f"{result.id}: called sys.exit")
     parts.extend(problems)
     return "; ".join(parts) if parts else "ok"
 
