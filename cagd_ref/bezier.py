@@ -337,6 +337,7 @@ def reparametrize_weights(weights, b) -> np.ndarray:
     speed, b = -1 traces the complementary part of the curve (t outside [0, 1]).
     """
     w = as_vector(weights, "weights")
+    w = as_weights(w, len(w))
     b = as_scalar(b, "b")
     if b == 0:
         raise ValueError("b: b = 0 collapses the curve to its first point")
@@ -381,6 +382,11 @@ def explicit_rational_bezier(coeffs, weights) -> tuple[np.ndarray, np.ndarray]:
     # t B_i^n = (i+1)/(n+1) B_{i+1}^{n+1}, so t w(t) has coefficients j w_{j-1} / (n+1).
     x_numerator = np.concatenate([[0.0], np.arange(1, n + 2) / (n + 1) * w])
     elevated = elevate(np.column_stack([w * y, w]))
+    if np.any(elevated[:, 1] == 0):
+        raise ValueError(
+            f"weights: the degree-raised weights {elevated[:, 1].tolist()} include a zero "
+            "(a control point at infinity), so the curve has no (points, weights) form"
+        )
     return from_homogeneous(np.column_stack([x_numerator, elevated]))
 
 
@@ -414,6 +420,8 @@ def directed_hausdorff(p, q, samples: int = 1001) -> float:
     """
     p = as_points(p, "p")
     q = as_points(q, "q")
+    if p.shape[1] != q.shape[1]:
+        raise ValueError(f"p, q: curves of different dimension {p.shape[1]} and {q.shape[1]}")
     samples = as_count(samples, "samples", minimum=2)
     ts = np.linspace(0, 1, samples)
     a, b = de_casteljau(p, ts), de_casteljau(q, ts)

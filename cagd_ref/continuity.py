@@ -6,7 +6,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._validation import as_count, as_points, as_scalar
+from ._validation import as_count, as_float_array, as_interval, as_points, as_scalar, as_weights
 from .bezier import derivative, evaluate, signed_curvature
 
 __all__ = ["Continuity", "continuity", "curvature_vector", "curvature_comb"]
@@ -26,9 +26,18 @@ class Continuity:
 
 
 def curvature_vector(first, second) -> np.ndarray:
-    """Curvature vector κN = (a |v|² - (a·v) v) / |v|⁴ from velocity v and acceleration a, each (k, d)."""
-    v = np.atleast_2d(first)
-    a = np.atleast_2d(second)
+    """Curvature vector κN = (a |v|² - (a·v) v) / |v|⁴ from velocity v and acceleration a, each (k, d) or (d,).
+
+    The result is (k, d) (one row for a single pair). The velocity must not vanish.
+    """
+    v = np.atleast_2d(as_float_array(first, "first"))
+    a = np.atleast_2d(as_float_array(second, "second"))
+    if v.ndim != 2 or v.shape[1] == 0:
+        raise ValueError(f"first: expected velocities of shape (k, d) or (d,), got shape {v.shape}")
+    if a.shape != v.shape:
+        raise ValueError(f"second: expected the shape {v.shape} of first, got shape {a.shape}")
+    if np.any(np.all(v == 0, axis=1)):
+        raise ValueError("first: a zero velocity has no curvature vector (the curve has a cusp there)")
     vv = np.einsum("ij,ij->i", v, v)[:, None]
     av = np.einsum("ij,ij->i", a, v)[:, None]
     return (a * vv - av * v) / vv**2
@@ -54,6 +63,12 @@ def continuity(p, q, p_interval=(0, 1), q_interval=(1, 2), p_weights=None, q_wei
     tol = as_scalar(tol, "tol")
     if p.shape[1] != q.shape[1]:
         raise ValueError(f"p, q: curves of different dimension {p.shape[1]} and {q.shape[1]}")
+    p_interval = as_interval(p_interval, "p_interval")
+    q_interval = as_interval(q_interval, "q_interval")
+    if p_weights is not None:
+        p_weights = as_weights(p_weights, len(p), "p_weights")
+    if q_weights is not None:
+        q_weights = as_weights(q_weights, len(q), "q_weights")
     end, start = p_interval[1], q_interval[0]
     scale = float(max(np.ptp(p, axis=0).max(), np.ptp(q, axis=0).max()))
     dp = [evaluate(p, end, p_weights, p_interval)] + [
@@ -92,6 +107,8 @@ def curvature_comb(points, count: int = 50, length: float = 1.0, weights=None) -
     trace the comb curve.
     """
     pts = as_points(points)
+    if pts.shape[1] != 2:
+        raise ValueError(f"points: a curvature comb needs planar points of shape (n+1, 2), got shape {pts.shape}")
     count = as_count(count, "count", minimum=2)
     length = as_scalar(length, "length")
     ts = np.linspace(0, 1, count)

@@ -109,6 +109,8 @@ def apply_transform(matrix, points) -> np.ndarray:
         raise ValueError(f"points: expected shape (3,) or (k, 3), got {pts.shape}")
     flat = pts.reshape(-1, 3)
     homogeneous = np.hstack([flat, np.ones((len(flat), 1))]) @ m.T
+    if np.any(homogeneous[:, 3] == 0):
+        raise ValueError("matrix: sends a point to infinity (its image has homogeneous coordinate w = 0)")
     return (homogeneous[:, :3] / homogeneous[:, 3:]).reshape(pts.shape)
 
 
@@ -195,7 +197,7 @@ def conic_type(a, b, c, d, e, f) -> str:
 
 
 def parametric_conic_type(denominator) -> str:
-    """Conic type of a rational quadratic x = X(t)/w(t), y = Y(t)/w(t) from its denominator.
+    """Conic type of a rational quadratic curve (X(t), Y(t)) / w(t), read off its denominator alone.
 
     `denominator` is (d0, d1, d2) for w(t) = d0 + d1 t + d2 t². The real roots of
     w are the parameters where the curve runs off to infinity, so the sign of

@@ -1,0 +1,65 @@
+"""Shared fixtures of the test suite.
+
+Sections are owned by the tests that use them; add new fixtures in a section of
+their own rather than changing one that other test files rely on.
+"""
+
+from __future__ import annotations
+
+import copy
+from math import comb
+
+import numpy as np
+import pytest
+from numpy.polynomial import Polynomial
+
+# ---------------------------------------------------------------------------
+# Core reference modules (test_geometry, test_bezier, test_polynomials,
+# test_continuity): independent peers and the "inputs are not modified" check.
+# ---------------------------------------------------------------------------
+
+
+@pytest.fixture
+def unchanged():
+    """Call ``func(*args, **kwargs)`` and fail if the call modified any of its arguments.
+
+    Every array-like argument is compared with a deep copy taken before the call;
+    the function's result is returned so the test can go on checking it.
+    """
+
+    def call(func, *args, **kwargs):
+        before = copy.deepcopy((args, kwargs))
+        result = func(*args, **kwargs)
+        for old, new in zip(list(before[0]) + list(before[1].values()), list(args) + list(kwargs.values())):
+            if old is None:
+                continue
+            np.testing.assert_array_equal(np.asarray(new), np.asarray(old), err_msg=f"{func.__name__} changed its input")
+        return result
+
+    return call
+
+
+def _bezier_polynomials(points, interval=(0.0, 1.0)) -> list[Polynomial]:
+    """The coordinates of a Bézier curve as numpy Polynomials in the global parameter t.
+
+    Built directly from the definition B_i^n(s) = C(n, i) (1-s)^(n-i) s^i with
+    s = (t - t0) / (t1 - t0), without touching `cagd_ref`, so it can check it.
+    """
+    pts = np.asarray(points, dtype=float)
+    n = len(pts) - 1
+    t0, t1 = interval
+    s = Polynomial([-t0 / (t1 - t0), 1.0 / (t1 - t0)])
+    basis = [comb(n, i) * (1 - s) ** (n - i) * s**i for i in range(n + 1)]
+    return [sum((pts[i, k] * basis[i] for i in range(n + 1)), Polynomial([0.0])) for k in range(pts.shape[1])]
+
+
+@pytest.fixture
+def bezier_polynomials():
+    """`_bezier_polynomials(points, interval=(0, 1))`: one numpy Polynomial per coordinate."""
+    return _bezier_polynomials
+
+
+@pytest.fixture
+def notes_cubic() -> np.ndarray:
+    """The cubic of the notes' hodograph table (§2.7), defined over [0, 1/2]."""
+    return np.array([[2.0, 1.0], [4.0, 5.0], [8.0, 6.0], [9.0, 2.0]])
