@@ -246,10 +246,11 @@ def curvature(points, t, weights=None) -> np.ndarray | float:
     if pts.shape[1] < 2:
         raise ValueError(f"points: curvature needs points of dimension >= 2, got shape {pts.shape}")
     first, second = _first_two_derivatives(pts, t, weights)
-    # |v × a|² = |v|²|a|² - (v·a)² holds in every dimension (Lagrange's identity).
-    gram = np.einsum("ij,ij->i", first, first) * np.einsum("ij,ij->i", second, second)
-    gram -= np.einsum("ij,ij->i", first, second) ** 2
-    return _finish_curvature(np.sqrt(np.clip(gram, 0, None)), first, t)
+    # |v ∧ a| from the 2x2 minors v_i a_j - v_j a_i: the cross product's length in 2-D and 3-D,
+    # valid in any dimension, and free of the cancellation of |v|²|a|² - (v·a)² on straight pieces.
+    i, j = np.triu_indices(pts.shape[1], k=1)
+    minors = first[:, i] * second[:, j] - first[:, j] * second[:, i]
+    return _finish_curvature(np.linalg.norm(minors, axis=1), first, t)
 
 
 def _first_two_derivatives(pts, t, weights):
