@@ -1,46 +1,27 @@
-"""Interactive explorers for the chapter notebooks: sliders drive a figure and a readout.
-
-Every explorer follows one pattern, implemented once in `Explorer`: a dict of
-named ipywidgets controls; `update(**values)` sets controls, recomputes
-(`compute`, pure NumPy on the `cagd_ref` functions), redraws (`draw`, with
-`cagd_ref.plotting`) and returns a dict of what is shown. Sliders call
-`update` through an observer; notebooks and tests call it directly, so every
-explorer works without a browser. The figure is a `matplotlib.figure.Figure`
-(no pyplot, so nothing is displayed twice) rendered to PNG by the Agg canvas
-into an `ipywidgets.Image`, or shown as an ipympl canvas when points can be
-dragged with the mouse.
-"""
+"""Explorers of chapter 2 of the notes: de Casteljau, control points, weights, elevation,
+subdivision, curvature combs and continuity of joined curves."""
 
 from __future__ import annotations
 
 import html
-import io
 from importlib.util import find_spec
 
 import ipywidgets as widgets
-import matplotlib
 import numpy as np
-from matplotlib.backends.backend_agg import FigureCanvasAgg
-from matplotlib.figure import Figure
-from matplotlib.transforms import Bbox
-from traitlets import TraitError
 
-from ._validation import as_count, as_float_array, as_points, as_vector
-from .bezier import bernstein_matrix, de_casteljau, de_casteljau_triangle, elevate, signed_curvature, subdivide
-from .continuity import continuity, curvature_comb
-from .geometry import conic_discriminant, conic_type, rotate_about_axis, rotation_matrix
-from .plotting import (
+from .._validation import as_count, as_float_array, as_points
+from ..bezier import de_casteljau, de_casteljau_triangle, elevate, signed_curvature, subdivide
+from ..continuity import continuity, curvature_comb
+from ..plotting import (
     bezier_samples,
     plot_bezier,
     plot_control_polygon,
     plot_curvature_comb,
     plot_de_casteljau,
-    plot_implicit,
-    plot_vector,
 )
+from ._base import CURVE_SAMPLES, DEFAULT_CUBIC, FAMILY_WEIGHTS, Explorer, _control_points, _fmt, _slider, _want_ipympl
 
 __all__ = [
-    "Explorer",
     "de_casteljau_explorer",
     "control_point_editor",
     "rational_weight_explorer",
@@ -48,194 +29,16 @@ __all__ = [
     "subdivision_explorer",
     "curvature_comb_explorer",
     "continuity_explorer",
-    "rotation_explorer",
-    "conic_explorer",
     "vertex_distance",
     "subdivide_all",
+    "DeCasteljauExplorer",
+    "ControlPointEditor",
+    "RationalWeightExplorer",
+    "DegreeElevationExplorer",
+    "SubdivisionExplorer",
+    "CurvatureCombExplorer",
+    "ContinuityExplorer",
 ]
-
-DEFAULT_CUBIC = np.array([[0.0, 0.0], [1.0, 2.0], [3.0, 2.5], [4.0, 0.5]])
-FAMILY_WEIGHTS = (0.0, 0.5, 1.0, 2.0, 5.0, 10.0)
-CURVE_SAMPLES = 200
-SLIDER_LAYOUT = widgets.Layout(width="300px")
-
-
-def _slider(kind, description: str, **options):
-    """A slider in the course's layout that reports every move, not just the release."""
-    return kind(description=description, continuous_update=True, layout=SLIDER_LAYOUT, **options)
-
-
-def _control_points(points, default: np.ndarray, min_count: int = 2) -> np.ndarray:
-    """Planar control points (n+1, 2) given to a factory, or a copy of the default."""
-    pts = as_points(default if points is None else points, min_count=min_count)
-    if pts.shape[1] != 2:
-        raise ValueError(f"points: the explorers draw planar curves, expected shape (n+1, 2), got {pts.shape}")
-    return pts
-
-
-def _ipympl_manager(figure: Figure):
-    """An ipympl figure manager (whose canvas is a widget) for `figure`, leaving matplotlib's backend alone.
-
-    Importing ipympl switches the global backend to itself, which would turn
-    every later pyplot figure of the notebook into a widget; the previous
-    setting (read raw, so an unresolved automatic choice stays automatic) is
-    put back.
-    """
-    previous = dict.__getitem__(matplotlib.rcParams, "backend")
-    from ipympl.backend_nbagg import new_figure_manager_given_figure
-
-    if isinstance(previous, str):
-        matplotlib.use(previous)
-    else:
-        dict.__setitem__(matplotlib.rcParams, "backend", previous)
-    return new_figure_manager_given_figure(id(figure), figure)
-
-
-def _fmt(vector) -> str:
-    return "(" + ", ".join(f"{v:.4g}" for v in np.ravel(vector)) + ")"
-
-
-class Explorer:
-    """Shared machinery: named controls -> `compute` -> `draw` -> PNG (or ipympl canvas) plus a text readout.
-
-    Subclasses set up their controls, then call `Explorer.__init__`, and
-    implement `compute(**values) -> dict` and `draw(ax, state)`; `describe`
-    turns the state into the readout's HTML.
-    """
-
-    figsize = (6.0, 4.5)
-    dpi = 100
-
-    def __init__(self, controls: dict, projection: str | None = None, interactive_canvas: bool = False):
-        self.controls = dict(controls)
-        # A fixed layout: constrained layout would measure every label on each redraw, tripling its cost.
-        self.figure = Figure(figsize=self.figsize, dpi=self.dpi)
-        self.figure.subplots_adjust(left=0.1, right=0.97, bottom=0.1, top=0.88)
-        if interactive_canvas:
-            self.canvas = _ipympl_manager(self.figure).canvas
-            self.canvas.header_visible = False
-            self.canvas.footer_visible = False
-            self.view = self.canvas
-        else:
-            self.canvas = FigureCanvasAgg(self.figure)
-            self.view = widgets.Image(format="png")
-        self.ax = self.figure.add_subplot(projection=projection)
-        self.readout = widgets.HTML()
-        self._syncing = False
-        for control in self.controls.values():
-            control.observe(self._on_control, names="value")
-        panel = widgets.VBox(list(self.controls.values()) + [self.readout])
-        self.widget = widgets.HBox([self.view, panel])
-        self.state: dict = {}
-        self.update()
-
-    # The notebook shows the explorer as its widget; the PNG rides along for static renderers.
-    def _repr_mimebundle_(self, **kwargs):
-        bundle = self.widget._repr_mimebundle_(**kwargs)
-        bundle = dict(bundle[0] if isinstance(bundle, tuple) else bundle)
-        bundle["image/png"] = self.png()
-        return bundle
-
-    @property
-    def values(self) -> dict:
-        """Current value of every control, by name."""
-        return {name: control.value for name, control in self.controls.items()}
-
-    def update(self, **values) -> dict:
-        """Set the named controls (others keep their value), recompute, redraw; return what is shown.
-
-        If the new values are rejected (ValueError/TypeError naming the
-        control), the controls go back to what they were.
-        """
-        previous = self.values
-        try:
-            self._set_controls(values)
-            state = self.compute(**self.values)
-        except (ValueError, TypeError):
-            self._set_controls(previous)
-            raise
-        self._clear()
-        self.draw(self.ax, state)
-        self.readout.value = self.describe(state)
-        self._render()
-        self.state = state
-        return state
-
-    def _set_controls(self, values: dict) -> None:
-        unknown = sorted(set(values) - set(self.controls))
-        if unknown:
-            raise TypeError(f"{', '.join(unknown)}: not a control of this explorer; controls are {sorted(self.controls)}")
-        self._syncing = True
-        try:
-            for name, value in values.items():
-                self._set_one(name, self.controls[name], value)
-        finally:
-            self._syncing = False
-
-    @staticmethod
-    def _set_one(name: str, control, value) -> None:
-        low, high = getattr(control, "min", None), getattr(control, "max", None)
-        if isinstance(control, widgets.FloatLogSlider):
-            low, high = control.base**low, control.base**high
-        if low is not None and not isinstance(value, bool) and isinstance(value, (int, float, np.number)):
-            # Sliders would silently clamp (and integer ones truncate); a caller's bad value is an error instead.
-            if isinstance(control, widgets.IntSlider) and not float(value).is_integer():
-                raise TypeError(f"{name}: expected an integer, got {value}")
-            if not low <= value <= high:
-                raise ValueError(f"{name}: expected a value in [{low:g}, {high:g}], got {value}")
-        try:
-            control.value = value
-        except TraitError as err:
-            raise TypeError(f"{name}: {err}") from None
-
-    def _clear(self) -> None:
-        """Empty the axes for the next drawing.
-
-        The axis objects stay (`Axes.clear` would rebuild every tick, a third
-        of a redraw); only what was drawn goes, and the limits forget the old
-        data. 3-D explorers set their limits themselves on every draw.
-        """
-        ax = self.ax
-        for artist in [*ax.lines, *ax.collections, *ax.patches, *ax.texts, *ax.artists, *ax.images]:
-            artist.remove()
-        if ax.get_legend() is not None:
-            ax.get_legend().remove()
-        ax.set_title("")
-        ax.dataLim.set_points(Bbox.null().get_points())
-        ax.ignore_existing_data_limits = True
-        ax.set_autoscale_on(True)
-
-    def _on_control(self, change) -> None:
-        if self._syncing:
-            return
-        try:
-            self.update()
-        except ValueError as err:
-            # From a slider there is no caller to raise to: show the problem instead.
-            self.readout.value = f"<b style='color:#b00'>{html.escape(str(err))}</b>"
-
-    def _render(self) -> None:
-        if isinstance(self.view, widgets.Image):
-            self.view.value = self.png()
-        else:
-            self.canvas.draw_idle()
-
-    def png(self) -> bytes:
-        """The current figure as PNG bytes."""
-        buffer = io.BytesIO()
-        # Light compression: at the default level, encoding costs as much as drawing.
-        self.figure.canvas.print_png(buffer, pil_kwargs={"compress_level": 1})
-        return buffer.getvalue()
-
-    def compute(self, **values) -> dict:
-        raise NotImplementedError
-
-    def draw(self, ax, state: dict) -> None:
-        raise NotImplementedError
-
-    def describe(self, state: dict) -> str:
-        return ""
-
 
 # ---------------------------------------------------------------- de Casteljau
 
@@ -362,16 +165,6 @@ class ControlPointEditor(Explorer):
     def on_release(self, event) -> None:
         """Mouse button up: let go of the point."""
         self._dragged = None
-
-
-def _want_ipympl() -> bool:
-    """Drag by default only inside a running kernel with ipympl installed, where a canvas can be shown."""
-    try:
-        from IPython import get_ipython
-    except ImportError:
-        return False
-    shell = get_ipython()
-    return shell is not None and hasattr(shell, "kernel") and find_spec("ipympl") is not None
 
 
 def control_point_editor(points=None, weights=None, draggable: bool | None = None) -> ControlPointEditor:
@@ -649,137 +442,3 @@ def continuity_explorer() -> ContinuityExplorer:
     (e.g. "C1, G1"), "p", "q", "h"}.
     """
     return ContinuityExplorer()
-
-
-# ---------------------------------------------------------------- chapter 1
-
-
-ROTATED_POINT = np.array([1.5, 0.0, 0.5])
-AXIS_POINT = np.array([0.0, 0.0, 0.0])
-
-
-class RotationExplorer(Explorer):
-    """A point rotated about an axis through B = origin, in 3-D, with the circle it moves on. Notes §1.3."""
-
-    def __init__(self, point=ROTATED_POINT, axis_point=AXIS_POINT):
-        self.point = as_vector(point, "point", dim=3)
-        self.axis_point = as_vector(axis_point, "axis_point", dim=3)
-        controls = {
-            "angle": _slider(widgets.FloatSlider, "angle (°)", min=-180.0, max=180.0, step=1.0, value=60.0),
-            "axis_x": _slider(widgets.FloatSlider, "axis x", min=-3.0, max=3.0, step=0.05, value=0.0),
-            "axis_y": _slider(widgets.FloatSlider, "axis y", min=-3.0, max=3.0, step=0.05, value=0.3),
-            "axis_z": _slider(widgets.FloatSlider, "axis z", min=-3.0, max=3.0, step=0.05, value=1.0),
-        }
-        super().__init__(controls, projection="3d")
-
-    def compute(self, angle: float, axis_x: float, axis_y: float, axis_z: float) -> dict:
-        direction = np.array([axis_x, axis_y, axis_z])
-        if not np.any(direction):
-            raise ValueError("axis_x, axis_y, axis_z: the axis direction must be a nonzero vector")
-        theta = np.radians(angle)
-        n = direction / np.linalg.norm(direction)
-        center = self.axis_point + ((self.point - self.axis_point) @ n) * n
-        u, v = self.point - center, np.cross(n, self.point - center)
-        sweep = np.linspace(0, 2 * np.pi, 121)[:, None]
-        travelled = np.linspace(0, theta, 61)[:, None]
-        return {
-            "angle": angle,
-            "original": self.point.copy(),
-            "point": rotate_about_axis(self.point, self.axis_point, direction, theta),
-            "matrix": rotation_matrix(self.axis_point, direction, theta),
-            "axis": n,
-            "center": center,
-            "circle": center + np.cos(sweep) * u + np.sin(sweep) * v,
-            "arc": center + np.cos(travelled) * u + np.sin(travelled) * v,
-        }
-
-    def draw(self, ax, state: dict) -> None:
-        n, c = state["axis"], state["center"]
-        radius = max(np.linalg.norm(state["original"] - c), 1.0)
-        reach = 1.5 * radius + np.linalg.norm(c - self.axis_point)
-        ax.plot(*np.array([self.axis_point - reach * n, self.axis_point + reach * n]).T, color="0.3", linewidth=1, label="axis")
-        plot_vector(ax, self.axis_point, n, label="$\\mathbf{n}$", color="0.2")
-        ax.plot(*state["circle"].T, color="C0", linewidth=1, label="circle of rotation")
-        ax.plot(*state["arc"].T, color="C3", linewidth=2.5, label=f"θ = {state['angle']:.0f}°")
-        ax.plot(*np.array([c, state["original"]]).T, ":", color="0.5")
-        ax.plot(*np.array([c, state["point"]]).T, ":", color="0.5")
-        ax.scatter(*state["original"], color="C1", s=40, label="P")
-        ax.scatter(*state["point"], color="C3", s=40, label="P′ (rotated)")
-        ax.scatter(*c, color="0.4", s=15, label="C (circle centre)")
-        low, high = c - 1.3 * radius, c + 1.3 * radius
-        ax.set(xlim=(low[0], high[0]), ylim=(low[1], high[1]), zlim=(low[2], high[2]))
-        ax.set_box_aspect((1, 1, 1))
-        ax.set_xlabel("x")
-        ax.set_ylabel("y")
-        ax.set_zlabel("z")
-        ax.set_title(f"Rotating P by {state['angle']:.0f}° about an axis", fontsize=10)
-        ax.legend(fontsize=7, loc="upper left")
-
-    def describe(self, state: dict) -> str:
-        return f"P′ = {_fmt(state['point'])}<br>axis n = {_fmt(state['axis'])}"
-
-
-def rotation_explorer(point=ROTATED_POINT, axis_point=AXIS_POINT) -> RotationExplorer:
-    """Controls `angle` (degrees) and `axis_x, axis_y, axis_z`: `point` (default (1.5, 0, 0.5)) rotated about
-    the axis through `axis_point` (default the origin). Notes §1.3.
-
-    `update` returns {"point" (3,), "matrix" (4, 4), "original", "axis" (unit),
-    "center", "circle" (121, 3), "arc" (61, 3) from P to P′}; matrix @ (P, 1) gives (point, 1).
-    """
-    return RotationExplorer(point, axis_point)
-
-
-class ConicExplorer(Explorer):
-    """The conic a x² + b xy + c y² + d x + e y + f = 0, drawn and classified by b² - 4ac. Notes §1.6."""
-
-    box = (-3.0, 3.0)
-
-    def __init__(self):
-        defaults = {"a": 1.0, "b": 0.0, "c": 1.0, "d": 0.0, "e": 0.0, "f": -1.0}
-        controls = {
-            name: _slider(widgets.FloatSlider, name, min=-5.0, max=5.0, step=0.1, value=value)
-            for name, value in defaults.items()
-        }
-        super().__init__(controls)
-
-    def compute(self, a: float, b: float, c: float, d: float, e: float, f: float) -> dict:
-        coefficients = (a, b, c, d, e, f)
-        kind = conic_type(*coefficients) if (a, b, c) != (0, 0, 0) else "not a conic (no quadratic terms)"
-        return {"type": kind, "discriminant": conic_discriminant(a, b, c), "coefficients": coefficients}
-
-    def draw(self, ax, state: dict) -> None:
-        a, b, c, d, e, f = state["coefficients"]
-        plot_implicit(ax, lambda x, y: a * x * x + b * x * y + c * y * y + d * x + e * y + f, self.box, self.box, label=state["type"])
-        ax.axhline(0, color="0.85", linewidth=0.8, zorder=0)
-        ax.axvline(0, color="0.85", linewidth=0.8, zorder=0)
-        ax.set_title(f"${_conic_equation(state['coefficients'])}$\n"
-                     f"$b^2-4ac$ = {state['discriminant']:.3g}: {state['type']}", fontsize=10)
-        ax.legend(fontsize=8, loc="upper right")
-
-    def describe(self, state: dict) -> str:
-        return f"b² − 4ac = {state['discriminant']:.4g} → <b>{html.escape(state['type'])}</b>"
-
-
-def _conic_equation(coefficients) -> str:
-    """Mathtext for a x² + b xy + c y² + d x + e y + f = 0, leaving out zero terms and unit factors."""
-    terms = []
-    for value, monomial in zip(coefficients, ("x^2", "xy", "y^2", "x", "y", "")):
-        if value == 0:
-            continue
-        sign = "-" if value < 0 else "+"
-        size = "" if abs(value) == 1 and monomial else f"{abs(value):g}"
-        terms.append(f"{sign} {size}{monomial}")
-    if not terms:
-        return "0 = 0"
-    # The first term keeps a minus sign, without a space, and drops a plus.
-    first = terms[0].replace("+ ", "").replace("- ", "-")
-    return " ".join([first, *terms[1:]]) + " = 0"
-
-
-def conic_explorer() -> ConicExplorer:
-    """Sliders `a, b, c, d, e, f` for a x² + b xy + c y² + d x + e y + f = 0, default the unit circle. Notes §1.6.
-
-    `update` returns {"type" ('ellipse'/'parabola'/'hyperbola'), "discriminant"
-    (b² - 4ac), "coefficients"}; an empty picture means no real points in view.
-    """
-    return ConicExplorer()
