@@ -18,19 +18,19 @@ from cagd_ref.grading.runner import Limits
 
 ROOT = Path(__file__).resolve().parent.parent
 SOLUTION = Path(__file__).parent / "fixtures" / "submissions" / "complete.ipynb"
-LIMITS = Limits(exercise_seconds=2, submission_seconds=30, memory_mb=512, output_bytes=10_000)
+LIMITS = Limits(exercise_seconds=3, submission_seconds=30, memory_mb=512, output_bytes=10_000)
 OUT_MARKER = "@OUT@"
 
 HOSTILE = {
-    "infinite_loop": ("def projection(p, q):\n    while True:\n        pass", 9, "01.projection: timed out after 2 s"),
+    "infinite_loop": ("def projection(p, q):\n    while True:\n        pass", 9, "01.projection: timed out after 3 s"),
     "ignores_signals": (
         "import signal\ndef projection(p, q):\n    for s in (signal.SIGTERM, signal.SIGINT, signal.SIGALRM, signal.SIGHUP):\n"
         "        signal.signal(s, signal.SIG_IGN)\n    while True:\n        pass",
         9,
-        "01.projection: timed out after 2 s",
+        "01.projection: timed out after 3 s",
     ),
     "memory_exhaustion": (
-        "def projection(p, q):\n    hoard = [bytearray(10_000_000)]\n    while True:\n        hoard.append(bytearray(len(hoard[-1]) * 10))",
+        "import numpy as np\ndef projection(p, q):\n    hoard = []\n    while True:\n        hoard.append(np.ones(50_000_000))",
         9,
         "01.projection: memory limit exceeded",
     ),

@@ -166,11 +166,11 @@ def grade_class(
     started = time.monotonic()
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
+    submissions = collect_submissions(paths)
     course = load_course()
     exercises = load_exercises(course, _chapter_ids(course, chapters))
     ids = list(exercises)
     header = ["submission", "score", "max_score", "status"] + ids + ["seed"]
-    submissions = collect_submissions(paths)
     gradebook = out / GRADEBOOK
     rows = {} if force else {k: v for k, v in read_gradebook(gradebook).items() if k in submissions}
     todo = {name: path for name, path in submissions.items() if name not in rows}

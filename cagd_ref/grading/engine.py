@@ -47,23 +47,24 @@ def _load_suite_file(path: Path) -> list[Exercise]:
 def load_exercises(course: Course | None = None, ids: list[str] | None = None) -> dict[str, tuple[Exercise, float]]:
     """Every exercise of the course (or just `ids`) with its points, from the hidden suites in book.toml order."""
     course = course or load_course()
+    listed = course.exercise_points()
+    unknown = [i for i in ids or () if i not in listed]
+    if unknown:
+        raise KeyError(f"unknown exercise id(s) {unknown}; `cagd list` shows them")
+    wanted = list(listed) if ids is None else list(ids)
     found: dict[str, tuple[Exercise, float]] = {}
     for chapter in course.chapters:
-        if not chapter.exercise_points:
+        mine = [eid for eid in wanted if eid in chapter.exercise_points]
+        if not mine:
             continue
         if chapter.hidden is None or not chapter.hidden.is_file():
             raise FileNotFoundError(f"chapter {chapter.number}: hidden suite {chapter.hidden} is missing")
         by_id = {exercise.id: exercise for exercise in _load_suite_file(chapter.hidden)}
-        for exercise_id, points in chapter.exercise_points.items():
+        for exercise_id in mine:
             if exercise_id not in by_id:
                 raise KeyError(f"{chapter.hidden} has no exercise {exercise_id!r} listed in book.toml")
-            found[exercise_id] = (by_id[exercise_id], float(points))
-    if ids is not None:
-        unknown = [i for i in ids if i not in found]
-        if unknown:
-            raise KeyError(f"unknown exercise id(s) {unknown}; `cagd list` shows them")
-        found = {i: found[i] for i in ids}
-    return found
+            found[exercise_id] = (by_id[exercise_id], float(listed[exercise_id]))
+    return {eid: found[eid] for eid in wanted}
 
 
 @dataclass
