@@ -30,7 +30,7 @@ HOSTILE = {
         "01.projection: timed out after 3 s",
     ),
     "memory_exhaustion": (
-        "import numpy as np\ndef projection(p, q):\n    hoard = []\n    while True:\n        hoard.append(np.ones(50_000_000))",
+        "import numpy as np\ndef projection(p, q):\n    hoard = []\n    while True:\n        hoard.append(np.zeros(50_000_000))",
         9,
         "01.projection: memory limit exceeded",
     ),

@@ -153,11 +153,13 @@ class _Session:
         except BrokenPipeError:
             pass
         self.current: str | None = None
+        self.exercise_started = time.monotonic()
         self.done = False
         self.loaded = False
 
-    def deadline(self, exercise_started: float) -> float:
-        return min(exercise_started + self.limits.exercise_seconds, self.started + self.limits.submission_seconds)
+    def deadline(self) -> float:
+        """When the exercise in progress (or the loading) and the submission as a whole run out of time."""
+        return min(self.exercise_started + self.limits.exercise_seconds, self.started + self.limits.submission_seconds)
 
     def run(self) -> list[Task]:
         """Drive the worker until it finishes, dies or overruns; return the tasks still to do."""
@@ -165,13 +167,12 @@ class _Session:
         selector.register(self.events, selectors.EVENT_READ, "events")
         selector.register(self.proc.stdout, selectors.EVENT_READ, "output")
         buffer = b""
-        exercise_started = time.monotonic()
         open_streams = 2
         try:
             while open_streams and not self.done:
-                timeout = self.deadline(exercise_started) - time.monotonic()
+                timeout = self.deadline() - time.monotonic()
                 if timeout <= 0:
-                    return self._overrun(exercise_started)
+                    return self._overrun()
                 for key, _ in selector.select(timeout):
                     chunk = os.read(key.fileobj.fileno(), 65536)
                     if not chunk:
@@ -184,8 +185,7 @@ class _Session:
                     buffer += chunk
                     *lines, buffer = buffer.split(b"\n")
                     for line in lines:
-                        if self._handle(line):
-                            exercise_started = time.monotonic()
+                        self._handle(line)
             if self.done:
                 return []
             return self._died()
@@ -193,8 +193,8 @@ class _Session:
             selector.close()
             self._stop()
 
-    def _handle(self, line: bytes) -> bool:
-        """Process one event; True when a new exercise started (its clock starts now)."""
+    def _handle(self, line: bytes) -> None:
+        """Process one event from the worker, checking it is the one the protocol allows next."""
         try:
             event = json.loads(line)
             kind = event["event"]
@@ -209,8 +209,7 @@ class _Session:
                 raise _ProtocolError("the graded process reported an exercise out of order")
             self.current = expected
             self.result.events[expected] = []
-            self.result.seconds[expected] = time.monotonic()
-            return True
+            self.exercise_started = time.monotonic()
         elif kind == "case":
             cases = self.result.events.get(self.current)
             if cases is None or event.get("exercise") != self.current or event.get("index") != len(cases):
@@ -221,12 +220,11 @@ class _Session:
         elif kind == "end":
             if event.get("exercise") != self.current or len(self.result.events[self.current]) != len(self.tasks[0].cases):
                 raise _ProtocolError("the graded process ended an exercise early")
-            self.result.seconds[self.current] = time.monotonic() - self.result.seconds[self.current]
+            self.result.seconds[self.current] = time.monotonic() - self.exercise_started
             self.tasks = self.tasks[1:]
             self.current = None
         elif kind == "done":
             self.done = not self.tasks
-        return False
 
     def _capture(self, chunk: bytes) -> None:
         room = self.limits.output_bytes - len(self.result.output.encode())
@@ -245,11 +243,11 @@ class _Session:
             return []
         current = self.tasks[0].exercise
         self.result.stopped[current] = reason
-        if current in self.result.seconds and current in self.result.events:
-            self.result.seconds[current] = time.monotonic() - self.result.seconds[current]
+        if current == self.current:
+            self.result.seconds[current] = time.monotonic() - self.exercise_started
         return self.tasks[1:]
 
-    def _overrun(self, exercise_started: float) -> list[Task]:
+    def _overrun(self) -> list[Task]:
         if time.monotonic() >= self.started + self.limits.submission_seconds:
             self._stop_current(f"stopped: the submission's time limit of {self.limits.submission_seconds:g} s ran out")
             for task in self.tasks[1:]:
