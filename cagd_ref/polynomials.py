@@ -3,7 +3,9 @@
 Coefficient arrays are (n+1,) for one polynomial or (n+1, d) for d polynomials
 at once (the columns), so curve coordinates and homogeneous coordinates convert,
 multiply and evaluate in one call. Power coefficients are ascending
-(a0 + a1 t + ..., as `numpy.polynomial`); Bernstein coefficients are on [0, 1].
+(a0 + a1 t + ..., as `numpy.polynomial`) in the global parameter t. Bernstein
+coefficients are on [0, 1], or on `interval=(t0, t1)` where a function takes
+one: then B_i^n is evaluated at the local parameter u = (t - t0) / (t1 - t0).
 """
 
 from __future__ import annotations
@@ -11,13 +13,16 @@ from __future__ import annotations
 from math import comb
 
 import numpy as np
+from numpy.typing import ArrayLike
 
-from ._validation import as_coefficients, as_interval, as_parameter
+from ._validation import as_coefficients, as_count, as_interval, as_parameter, as_scalar
 
 __all__ = [
     "horner",
     "bernstein_horner",
+    "evaluation_cost",
     "difference_table",
+    "substitute_affine",
     "bernstein_to_power",
     "power_to_bernstein",
     "bernstein_multiply",
@@ -25,61 +30,127 @@ __all__ = [
     "bernstein_area",
 ]
 
+# C(n, n/2) no longer fits in a double from n = 1030 on.
+MAX_BINOMIAL_DEGREE = 1029
 
-def _binomials(n: int) -> np.ndarray:
+
+def _binomials(n: int, name: str = "coeffs") -> np.ndarray:
+    """C(n, 0), ..., C(n, n) as floats, shape (n+1,)."""
+    if n > MAX_BINOMIAL_DEGREE:
+        raise ValueError(
+            f"{name}: degree {n} is too high; the binomial coefficients C(n, i) overflow a float "
+            f"beyond degree {MAX_BINOMIAL_DEGREE}"
+        )
     return np.array([comb(n, i) for i in range(n + 1)], dtype=float)
 
 
 def _column(values: np.ndarray, like: np.ndarray) -> np.ndarray:
-    """Broadcast a (n+1,) factor against coefficients of shape (n+1,) or (n+1, d)."""
+    """A 1-D array (m,) shaped to broadcast against rows of coefficients `like` (·,) or (·, d): (m,) or (m, 1).
+
+    Serves per-coefficient factors such as the binomials, and per-point parameters.
+    """
     return values.reshape((-1,) + (1,) * (like.ndim - 1))
 
 
+def _constant(row: np.ndarray, count: int) -> np.ndarray:
+    """`count` copies of one coefficient row: (count,) or (count, d)."""
+    return np.broadcast_to(row, (count,) + row.shape).copy()
+
+
 def _finish(values: np.ndarray, scalar: bool):
+    """One value (float, or (d,)) for a scalar parameter; the (k,) or (k, d) array otherwise."""
     if scalar:
         return values[0] if values.ndim > 1 else float(values[0])
     return values
 
 
-def horner(coeffs, t):
-    """Evaluate a0 + a1 t + ... + an tⁿ by nested multiplication, n multiplies and adds. Notes ch. 3.
+def substitute_affine(coeffs: ArrayLike, shift: float, scale: float) -> np.ndarray:
+    """Power coefficients of q(u) = p(shift + scale u) from those of p, same shape ((n+1,) or (n+1, d)). Notes ch. 3-4.
 
-    coeffs: (n+1,) or (n+1, d). t: a number -> float or (d,); k values -> (k,) or (k, d).
+    Horner's scheme again, but on polynomials: q starts as a_n and is
+    multiplied by the linear factor (shift + scale u) before each lower
+    coefficient is added.
+    """
+    coeffs = as_coefficients(coeffs)
+    shift, scale = as_scalar(shift, "shift"), as_scalar(scale, "scale")
+    q = coeffs[-1:].copy()
+    for coefficient in coeffs[-2::-1]:
+        widened = np.zeros((len(q) + 1,) + q.shape[1:])
+        widened[:-1] += shift * q
+        widened[1:] += scale * q
+        widened[0] += coefficient
+        q = widened
+    return q
+
+
+def horner(coeffs: ArrayLike, t: ArrayLike) -> float | np.ndarray:
+    """Evaluate a0 + a1 t + ... + an tⁿ in nested form, n multiplies and n adds per point. Notes ch. 3.
+
+    coeffs: ascending power coefficients (n+1,) or (n+1, d). t: a number ->
+    float or (d,); a 1-D array of k values -> (k,) or (k, d).
     """
     a = as_coefficients(coeffs)
     ts, scalar = as_parameter(t)
-    tt = ts.reshape((-1,) + (1,) * (a.ndim - 1))
-    value = np.broadcast_to(a[-1], (len(ts),) + a.shape[1:]).copy()
+    tt = _column(ts, a)
+    value = _constant(a[-1], len(ts))
     for coefficient in a[-2::-1]:
         value = value * tt + coefficient
     return _finish(value, scalar)
 
 
-def bernstein_horner(coeffs, t):
-    """Evaluate Σ b_i B_i^n(t) by the nested Bernstein form, O(n) per point. Notes ch. 3.
+def bernstein_horner(coeffs: ArrayLike, t: ArrayLike, interval: ArrayLike = (0, 1)) -> float | np.ndarray:
+    """Evaluate Σ b_i B_i^n(u) in the nested Bernstein form, O(n) per point. Notes ch. 3.
 
-    With s = 1 - t the sum is ((b0 C(n,0) s + b1 C(n,1) t) s + b2 C(n,2) t²) s + ...,
-    building the powers of t and the binomials as it goes, so no powers of s
-    and no de Casteljau triangle are needed. Shapes as in `horner`.
+    With s = 1 - u the sum is (((c0 s + c1 u) s + c2 u²) s + ...) s + cn uⁿ,
+    where c_i = C(n, i) b_i is formed once per polynomial; each point then
+    costs 3n multiplies and n + 1 adds (see `evaluation_cost`), against the
+    O(n²) of the de Casteljau triangle. coeffs: Bernstein coefficients (n+1,)
+    or (n+1, d) on `interval`; u = (t - t0) / (t1 - t0). Shapes as in `horner`.
     """
     b = as_coefficients(coeffs)
     ts, scalar = as_parameter(t)
+    t0, t1 = as_interval(interval)
     n = len(b) - 1
-    tt = ts.reshape((-1,) + (1,) * (b.ndim - 1))
     if n == 0:
-        return _finish(np.broadcast_to(b[0], (len(ts),) + b.shape[1:]).copy(), scalar)
-    s = 1 - tt
-    power, binomial = np.ones_like(tt), 1.0
-    value = b[0] * s
-    for i in range(1, n):
-        power = power * tt
-        binomial = binomial * (n - i + 1) / i
-        value = (value + power * binomial * b[i]) * s
-    return _finish(value + power * tt * b[n], scalar)
+        return _finish(_constant(b[0], len(ts)), scalar)
+    c = b * _column(_binomials(n), b)
+    u = _column((ts - t0) / (t1 - t0), b)
+    s = 1 - u
+    power = np.ones_like(u)
+    value = c[0] * s
+    for coefficient in c[1:-1]:
+        power = power * u
+        value = (value + power * coefficient) * s
+    return _finish(value + power * u * c[-1], scalar)
 
 
-def difference_table(coeffs) -> list[np.ndarray]:
-    """Forward differences of the coefficients: row j holds Δʲ b_i, i = 0..n-j. Notes ch. 3."""
+def evaluation_cost(degree: int) -> dict[str, tuple[int, int]]:
+    """Floating-point (multiplies, adds) per evaluation point of a degree-n polynomial, by method. Notes ch. 3.
+
+    Keys: "horner" (power form, (n, n)), "bernstein_horner" (nested Bernstein
+    form with C(n, i) b_i precomputed once: (3n, n + 1)) and "de_casteljau"
+    (n(n+1)/2 interpolations (1-t) a + t b of 2 multiplies and 1 add each,
+    plus 1 - t once). Divisions count as multiplies, subtractions as adds;
+    a degree-0 polynomial costs nothing.
+    """
+    n = as_count(degree, "degree")
+    if n == 0:
+        return {"horner": (0, 0), "bernstein_horner": (0, 0), "de_casteljau": (0, 0)}
+    steps = n * (n + 1) // 2
+    return {
+        "horner": (n, n),
+        "bernstein_horner": (3 * n, n + 1),
+        "de_casteljau": (2 * steps, steps + 1),
+    }
+
+
+def difference_table(coeffs: ArrayLike) -> list[np.ndarray]:
+    """Forward differences of the coefficients, row j holding Δʲ b_i for i = 0..n-j. Notes ch. 3.
+
+    Rows have shape (n+1-j,) or (n+1-j, d); row 0 is a copy of `coeffs`. The
+    left column (row j, entry 0) gives the derivatives at 0:
+    B^(j)(0) = n!/(n-j)! Δʲ b_0.
+    """
     b = as_coefficients(coeffs)
     rows = [b]
     while len(rows[-1]) > 1:
@@ -87,52 +158,63 @@ def difference_table(coeffs) -> list[np.ndarray]:
     return rows
 
 
-def bernstein_to_power(coeffs) -> np.ndarray:
-    """Bernstein coefficients on [0, 1] -> ascending power coefficients: a_i = C(n, i) Δⁱ b_0. Notes (3.1)."""
+def bernstein_to_power(coeffs: ArrayLike, interval: ArrayLike = (0, 1)) -> np.ndarray:
+    """Bernstein coefficients on `interval` -> ascending power coefficients in t, same shape. Notes (3.1).
+
+    On [0, 1] the power coefficients are the Taylor coefficients at 0,
+    a_i = B^(i)(0) / i! = C(n, i) Δⁱ b_0: the left column of the difference
+    table scaled by the binomials. On [t0, t1] that gives the polynomial in
+    u = (t - t0) / (t1 - t0), which is then rewritten in t.
+    """
     b = as_coefficients(coeffs)
+    t0, t1 = as_interval(interval)
     leading = np.array([row[0] for row in difference_table(b)])
-    return leading * _column(_binomials(len(b) - 1), b)
+    local = leading * _column(_binomials(len(b) - 1), b)
+    return substitute_affine(local, -t0 / (t1 - t0), 1 / (t1 - t0))
 
 
-def power_to_bernstein(coeffs) -> np.ndarray:
-    """Ascending power coefficients -> Bernstein coefficients on [0, 1]. Notes ch. 3.
+def power_to_bernstein(coeffs: ArrayLike, interval: ArrayLike = (0, 1)) -> np.ndarray:
+    """Ascending power coefficients in t -> Bernstein coefficients on `interval`, same shape. Notes ch. 3.
 
-    The left column of the difference table is a_i / C(n, i); running the table
-    backwards (each entry is the one to its left plus the one below that) fills
-    in the top row, which holds the Bernstein coefficients.
+    The left column of the difference table is a_j / C(n, j); running the
+    table backwards (each entry is the one to its left plus the one below
+    that) fills in the top row, which holds the Bernstein coefficients. On
+    [t0, t1] the polynomial is first rewritten in u, t = t0 + (t1 - t0) u.
     """
     a = as_coefficients(coeffs)
-    n = len(a) - 1
-    column = a / _column(_binomials(n), a)
+    t0, t1 = as_interval(interval)
+    local = substitute_affine(a, t0, t1 - t0)
+    column = local / _column(_binomials(len(a) - 1), local)
     # `column[j]` is the entry Δʲ at the current position; stepping one place to
     # the right replaces Δʲ by Δʲ + Δʲ⁺¹ for every order j at once.
     top = [column[0]]
-    for _ in range(n):
+    while len(column) > 1:
         column = column[:-1] + column[1:]
         top.append(column[0])
     return np.array(top)
 
 
-def bernstein_multiply(f, g) -> np.ndarray:
+def bernstein_multiply(f: ArrayLike, g: ArrayLike) -> np.ndarray:
     """Bernstein coefficients of the product of two Bernstein polynomials (degrees m and n -> m + n). Notes ch. 9.
 
     h_k = Σ_{i+j=k} C(m, i) C(n, j) / C(m+n, k) f_i g_j. Both inputs (m+1,)/(n+1,)
-    or both (·, d) for column-wise products.
+    or both (·, d) for column-wise products; the same on any common interval.
     """
     f = as_coefficients(f, "f")
     g = as_coefficients(g, "g")
     if f.ndim != g.ndim or f.shape[1:] != g.shape[1:]:
         raise ValueError(f"f, g: coefficient arrays must have matching columns, got shapes {f.shape} and {g.shape}")
     m, n = len(f) - 1, len(g) - 1
-    scaled_f = f * _column(_binomials(m), f)
-    scaled_g = g * _column(_binomials(n), g)
+    product_binomials = _binomials(m + n, "f, g")
+    scaled_f = f * _column(_binomials(m, "f"), f)
+    scaled_g = g * _column(_binomials(n, "g"), g)
     product = np.zeros((m + n + 1,) + f.shape[1:])
     for i in range(m + 1):
         product[i : i + n + 1] += scaled_f[i] * scaled_g
-    return product / _column(_binomials(m + n), product)
+    return product / _column(product_binomials, product)
 
 
-def bernstein_integral(coeffs, interval=(0, 1)) -> np.ndarray:
+def bernstein_integral(coeffs: ArrayLike, interval: ArrayLike = (0, 1)) -> np.ndarray:
     """Coefficients of the antiderivative q (degree n+1, q(t0) = 0) of p = Σ p_i B_i^n over `interval`. Notes (2.17)-(2.19).
 
     q_0 = 0 and q_i = (t1 - t0)/(n+1) (p_0 + ... + p_{i-1}); shape (n+2,) or (n+2, d).
@@ -144,6 +226,6 @@ def bernstein_integral(coeffs, interval=(0, 1)) -> np.ndarray:
     return (t1 - t0) / (n + 1) * np.concatenate([zero, np.cumsum(p, axis=0)])
 
 
-def bernstein_area(coeffs, interval=(0, 1)):
+def bernstein_area(coeffs: ArrayLike, interval: ArrayLike = (0, 1)) -> float | np.ndarray:
     """Area under an explicit Bézier curve over `interval`: (t1 - t0) times the mean coefficient. Notes (2.20)."""
     return bernstein_integral(coeffs, interval)[-1]

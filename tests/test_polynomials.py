@@ -2,11 +2,15 @@
 
 from __future__ import annotations
 
+from fractions import Fraction
+from math import comb
+
 import numpy as np
 import numpy.polynomial.polynomial as npp
 import pytest
 import sympy as sp
-from scipy.interpolate import BPoly
+from numpy.polynomial import Polynomial
+from scipy.interpolate import BPoly, PPoly
 
 from cagd_ref import polynomials as p
 from cagd_ref.bezier import bernstein_matrix, de_casteljau, elevate, evaluate, from_homogeneous, hodograph
@@ -21,10 +25,28 @@ t_sym = sp.Symbol("t")
 
 def test_every_public_name_is_tested():
     tested = {
-        "horner", "bernstein_horner", "difference_table", "bernstein_to_power", "power_to_bernstein",
-        "bernstein_multiply", "bernstein_integral", "bernstein_area",
+        "horner", "bernstein_horner", "evaluation_cost", "difference_table", "substitute_affine", "bernstein_to_power",
+        "power_to_bernstein", "bernstein_multiply", "bernstein_integral", "bernstein_area",
     }
     assert set(p.__all__) == tested
+
+
+# --- affine substitution ------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("shift, scale", [(0.0, 1.0), (2.0, 0.5), (-1.5, 3.0)])
+def test_substitute_affine_matches_numpy_composition(shift, scale):
+    rng = np.random.default_rng(4)
+    coeffs = rng.normal(size=(5, 2))
+    got = p.substitute_affine(coeffs, shift, scale)
+    for column in range(2):
+        expected = Polynomial(coeffs[:, column])(Polynomial([shift, scale])).coef
+        np.testing.assert_allclose(got[:, column], expected, atol=1e-12)
+
+
+def test_substitute_affine_rejects_bad_input():
+    with pytest.raises(ValueError, match="shift"):
+        p.substitute_affine([1.0, 2.0], [1.0, 2.0], 1.0)
 
 
 # --- evaluation (Notes ch. 3) -----------------------------------------------------------------
@@ -74,6 +96,148 @@ def test_bernstein_horner_columns_evaluate_a_curve():
     t = np.linspace(-0.5, 1.5, 9)
     np.testing.assert_allclose(p.bernstein_horner(points, t), de_casteljau(points, t), atol=1e-12)
     np.testing.assert_allclose(p.bernstein_horner(points, 0.25), de_casteljau(points, 0.25), atol=1e-12)
+
+
+@pytest.mark.parametrize("interval", [(0, 1), (2, 5), (-1, -0.25)])
+def test_bernstein_horner_on_an_interval(interval):
+    t0, t1 = interval
+    rng = np.random.default_rng(7)
+    coeffs = rng.normal(size=(6, 2))
+    t = np.linspace(t0 - 0.5, t1 + 0.5, 13)
+    values = p.bernstein_horner(coeffs, t, interval)
+    np.testing.assert_allclose(values, evaluate(coeffs, t, interval=interval), rtol=1e-11, atol=1e-12)
+    np.testing.assert_allclose(values, BPoly(coeffs[:, None, :], [t0, t1], extrapolate=True)(t), atol=1e-11)
+    np.testing.assert_allclose(p.bernstein_horner(coeffs, [t0, t1], interval), coeffs[[0, -1]], rtol=1e-14)
+
+
+class Tally:
+    """A number that counts the floating-point multiplies and adds done with it (a test-only peer)."""
+
+    def __init__(self, value, counts):
+        self.value, self.counts = float(value), counts
+
+    def _counted(self, kind, result):
+        self.counts[kind] += 1
+        return Tally(result, self.counts)
+
+    def __mul__(self, other):
+        return self._counted("multiplies", self.value * float(other))
+
+    __rmul__ = __mul__
+
+    def __truediv__(self, other):
+        return self._counted("multiplies", self.value / float(other))
+
+    def __add__(self, other):
+        return self._counted("adds", self.value + float(other))
+
+    __radd__ = __add__
+
+    def __sub__(self, other):
+        return self._counted("adds", self.value - float(other))
+
+    def __rsub__(self, other):
+        return self._counted("adds", float(other) - self.value)
+
+    def __float__(self):
+        return self.value
+
+
+def _horner_by_hand(a, t):
+    h = a[-1]
+    for coefficient in a[-2::-1]:
+        h = t * h + coefficient
+    return h
+
+
+def _de_casteljau_by_hand(b, t):
+    level = list(b)
+    if len(level) > 1:
+        s = 1 - t
+        while len(level) > 1:
+            level = [s * left + t * right for left, right in zip(level, level[1:])]
+    return level[0]
+
+
+def _bernstein_horner_by_hand(b, t):
+    # The nested Bernstein form with c_i = C(n, i) b_i prepared once per polynomial.
+    n = len(b) - 1
+    c = [comb(n, i) * bi for i, bi in enumerate(b)]
+    if n == 0:
+        return c[0]
+    s = 1 - t
+    value, power = c[0] * s, 1
+    for ci in c[1:-1]:
+        power = power * t
+        value = (value + power * ci) * s
+    return value + power * t * c[-1]
+
+
+@pytest.mark.parametrize("degree", [0, 1, 2, 3, 7, 12])
+def test_evaluation_cost_counts_what_the_algorithms_do(degree):
+    coeffs = list(np.random.default_rng(degree).normal(size=degree + 1))
+    costs = p.evaluation_cost(degree)
+    for method, by_hand, reference in [
+        ("horner", _horner_by_hand, p.horner),
+        ("de_casteljau", _de_casteljau_by_hand, p.bernstein_horner),
+        ("bernstein_horner", _bernstein_horner_by_hand, p.bernstein_horner),
+    ]:
+        counts = {"multiplies": 0, "adds": 0}
+        value = by_hand(coeffs, Tally(0.3, counts))
+        assert float(value) == pytest.approx(reference(coeffs, 0.3), rel=1e-12, abs=1e-12)
+        assert costs[method] == (counts["multiplies"], counts["adds"]), method
+
+
+def test_evaluation_cost_formulas():
+    assert p.evaluation_cost(3) == {"horner": (3, 3), "bernstein_horner": (9, 4), "de_casteljau": (12, 7)}
+    for n in (1, 5, 40):
+        costs = p.evaluation_cost(n)
+        assert costs["horner"] == (n, n)
+        assert sum(costs["de_casteljau"]) == 3 * n * (n + 1) // 2 + 1           # O(n²)
+        assert sum(costs["bernstein_horner"]) == 4 * n + 1                       # O(n)
+    # Nested Bernstein evaluation beats de Casteljau from the quadratic on, and never beats Horner.
+    for n in range(2, 30):
+        costs = {k: sum(v) for k, v in p.evaluation_cost(n).items()}
+        assert costs["horner"] < costs["bernstein_horner"] < costs["de_casteljau"]
+
+
+def _exact_roots_polynomial(roots):
+    """Exact power and Bernstein coefficients (Fractions) of the product of (t - r) over the roots."""
+    power = [Fraction(1)]
+    for r in roots:
+        power = [Fraction(0)] + power
+        for k in range(len(power) - 1):
+            power[k] -= r * power[k + 1]
+    n = len(power) - 1
+    bernstein = [sum(Fraction(comb(j, i), comb(n, i)) * power[i] for i in range(j + 1)) for j in range(n + 1)]
+    return power, bernstein
+
+
+def test_bernstein_form_is_far_more_accurate_near_roots_in_the_interval():
+    # Twelve roots evenly spread in [0, 1]: the power coefficients cancel wildly, the Bernstein ones do not.
+    roots = [Fraction(k, 13) for k in range(1, 13)]
+    power, bernstein = _exact_roots_polynomial(roots)
+    ts = [Fraction(k, 97) for k in range(1, 97)]
+    exact = np.array([float(np.prod([t - r for r in roots])) for t in ts])
+    t = np.array([float(x) for x in ts])
+    in_power = p.horner([float(a) for a in power], t)
+    in_bernstein = p.bernstein_horner([float(b) for b in bernstein], t)
+    by_triangle = de_casteljau(np.array([[float(b)] for b in bernstein]), t)[:, 0]
+    scale = np.abs(exact).max()
+    assert np.abs(in_bernstein - exact).max() < 1e-12 * scale
+    assert np.abs(by_triangle - exact).max() < 1e-12 * scale
+    assert np.abs(in_power - exact).max() > 100 * np.abs(in_bernstein - exact).max()
+    # The exact conversion agrees with the floating-point difference table.
+    np.testing.assert_allclose(p.power_to_bernstein([float(a) for a in power]), [float(b) for b in bernstein],
+                               atol=1e-9 * scale)
+
+
+def test_bernstein_horner_handles_the_highest_degree_with_finite_binomials():
+    n = p.MAX_BINOMIAL_DEGREE
+    t = np.array([0.0, 0.3, 0.5, 1.0])
+    assert np.allclose(p.bernstein_horner(np.ones(n + 1), t), 1.0)          # partition of unity
+    ramp = np.arange(n + 1) / n                                              # the coefficients of t itself
+    np.testing.assert_allclose(p.bernstein_horner(ramp, t), t, atol=1e-12)
 
 
 # --- basis conversion (Notes (3.1) and the difference table) ------------------------------------
@@ -142,6 +306,57 @@ def test_power_basis_monomials():
         monomial = np.eye(n + 1)[k]
         expected = [float(sp.binomial(i, k) / sp.binomial(n, k)) for i in range(n + 1)]
         np.testing.assert_allclose(p.power_to_bernstein(monomial), expected, atol=1e-15)
+
+
+@pytest.mark.parametrize("degree", [0, 1, 3, 6])
+def test_conversions_against_scipy_piecewise_polynomials(degree):
+    # SciPy stores power coefficients highest first; on the breakpoints [0, 1] its local variable is t.
+    rng = np.random.default_rng(40 + degree)
+    a = rng.normal(size=degree + 1)
+    as_bernstein = BPoly.from_power_basis(PPoly(a[::-1, None], [0, 1]))
+    np.testing.assert_allclose(p.power_to_bernstein(a), as_bernstein.c[:, 0], rtol=1e-12, atol=1e-13)
+    b = rng.normal(size=degree + 1)
+    as_power = PPoly.from_bernstein_basis(BPoly(b[:, None], [0, 1]))
+    np.testing.assert_allclose(p.bernstein_to_power(b), as_power.c[::-1, 0], rtol=1e-12, atol=1e-12)
+
+
+@pytest.mark.parametrize("interval", [(0, 1), (1, 3), (-2, -0.5), (0.25, 4)])
+@pytest.mark.parametrize("degree", [0, 1, 4])
+def test_conversions_on_an_interval_against_polynomial_composition(degree, interval):
+    t0, t1 = interval
+    rng = np.random.default_rng(degree)
+    b = rng.normal(size=(degree + 1, 2))
+    # numpy.polynomial builds Σ b_i C(n, i) (1-u)^(n-i) u^i with u = (t - t0)/(t1 - t0) as a polynomial in t.
+    u = Polynomial([-t0 / (t1 - t0), 1 / (t1 - t0)])
+    for k in range(2):
+        expected = sum(b[i, k] * comb(degree, i) * (1 - u) ** (degree - i) * u**i for i in range(degree + 1))
+        coef = np.pad(expected.coef, (0, degree + 1))[: degree + 1]
+        np.testing.assert_allclose(p.bernstein_to_power(b, interval)[:, k], coef, rtol=1e-9, atol=1e-9)
+    a = rng.normal(size=degree + 1)
+    there = p.power_to_bernstein(a, interval)
+    t = np.linspace(t0, t1, 9)
+    np.testing.assert_allclose(p.bernstein_horner(there, t, interval), npp.polyval(t, a), rtol=1e-9, atol=1e-9)
+    np.testing.assert_allclose(BPoly(there[:, None], [t0, t1])(t), npp.polyval(t, a), rtol=1e-9, atol=1e-9)
+    np.testing.assert_allclose(p.bernstein_to_power(there, interval), a, rtol=1e-9, atol=1e-9)
+
+
+def test_interval_conversion_is_exact_on_integer_data():
+    # Bernstein coefficients (2, -1, 3) on [1, 3]: SymPy expands with u = (t - 1)/2 in rationals.
+    b = [2, -1, 3]
+    u = (t_sym - 1) / 2
+    expanded = sp.expand(sum(bi * sp.binomial(2, i) * (1 - u) ** (2 - i) * u**i for i, bi in enumerate(b)))
+    exact = [expanded.coeff(t_sym, k) for k in range(3)]
+    assert exact == [sp.Rational(27, 4), sp.Rational(-13, 2), sp.Rational(7, 4)]
+    np.testing.assert_allclose(p.bernstein_to_power(b, (1, 3)), [float(c) for c in exact], rtol=1e-14)
+    np.testing.assert_allclose(p.power_to_bernstein([float(c) for c in exact], (1, 3)), b, rtol=1e-13, atol=1e-13)
+
+
+def test_notes_example_by_numpy_polynomial_composition():
+    # Each homogeneous coordinate of the notes' curve, rebuilt from its Bernstein row by numpy.polynomial.
+    t = Polynomial([0, 1])
+    for k in range(3):
+        curve = sum(NOTES_BERNSTEIN[i, k] * comb(3, i) * (1 - t) ** (3 - i) * t**i for i in range(4))
+        np.testing.assert_allclose(curve.coef, NOTES_POWER[:, k], atol=1e-12)
 
 
 # --- products and integrals (Notes §2.16, ch. 9) --------------------------------------------------
@@ -224,6 +439,15 @@ def test_bernstein_integral_notes_formula_and_columns():
         (lambda: p.bernstein_integral([1, 2], (0, np.inf)), ValueError, "interval"),
         (lambda: p.bernstein_area([1, 2], (2, 1)), ValueError, "interval"),
         (lambda: p.bernstein_area([], (0, 1)), ValueError, "coeffs"),
+        (lambda: p.bernstein_horner([1, 2], 0.5, (1, 0)), ValueError, "interval"),
+        (lambda: p.bernstein_to_power([1, 2], (0, 0)), ValueError, "interval"),
+        (lambda: p.power_to_bernstein([1, 2], (0, 1, 2)), ValueError, "interval"),
+        (lambda: p.power_to_bernstein([1, 2], "ab"), TypeError, "interval"),
+        (lambda: p.bernstein_horner(np.ones(1101), 0.5), ValueError, "coeffs"),
+        (lambda: p.bernstein_to_power(np.ones(1031)), ValueError, "coeffs"),
+        (lambda: p.bernstein_multiply(np.ones(600), np.ones(600)), ValueError, "f, g"),
+        (lambda: p.evaluation_cost(-1), ValueError, "degree"),
+        (lambda: p.evaluation_cost(2.0), TypeError, "degree"),
     ],
 )
 def test_bad_input_names_the_argument(call, error, name):
@@ -239,6 +463,8 @@ def test_inputs_are_not_modified(unchanged):
         (p.horner, (a, t)), (p.horner, (c, t)), (p.bernstein_horner, (a, t)), (p.bernstein_horner, (c, 0.5)),
         (p.difference_table, (c,)), (p.bernstein_to_power, (c,)), (p.power_to_bernstein, (c,)),
         (p.bernstein_multiply, (c, c)), (p.bernstein_integral, (a, np.array([0.0, 2.0]))), (p.bernstein_area, (c,)),
+        (p.bernstein_horner, (c, t, np.array([-1.0, 2.0]))), (p.bernstein_to_power, (a, np.array([1.0, 3.0]))),
+        (p.power_to_bernstein, (c, [0.5, 2.0])),
     ]:
         unchanged(func, *args)
     # The first row of the difference table is a copy, not the caller's array.

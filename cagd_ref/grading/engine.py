@@ -141,7 +141,7 @@ def _mutation(case: Case, event: dict) -> str:
     for position, (before, now) in enumerate(zip(case.args, after)):
         if isinstance(before, (np.ndarray, list)) and not isinstance(now, Unsupported):
             try:
-                same = np.array_equal(np.asarray(before, dtype=float), np.asarray(now, dtype=float))
+                same = np.array_equal(np.asarray(before, dtype=float), np.asarray(now, dtype=float), equal_nan=True)
             except (TypeError, ValueError):
                 same = False
             if not same:

@@ -1,0 +1,238 @@
+"""Forward differencing: many equally spaced values of a polynomial for n additions each. Notes chapter 4.
+
+A polynomial f of degree n sampled at t_k = t0 + k δ has forward differences
+Δ⁰ = f, Δʲ(t_k) = Δʲ⁻¹(t_{k+1}) - Δʲ⁻¹(t_k); the n-th one is the constant
+n! a_n δⁿ. Once the n+1 differences at t0 are known, every next value follows
+by additions alone. Arrays of values or coefficients are (n+1,) for one
+polynomial or (n+1, d) for d of them at once (the columns, e.g. the
+coordinates of a curve), as in `cagd_ref.polynomials`.
+"""
+
+from __future__ import annotations
+
+from math import comb, factorial
+
+import numpy as np
+
+from ._validation import as_coefficients, as_count, as_points, as_scalar
+from .polynomials import bernstein_to_power, difference_table, horner, substitute_affine
+
+__all__ = [
+    "forward_difference_table",
+    "initial_differences",
+    "power_differences",
+    "forward_difference_steps",
+    "forward_difference_eval",
+    "missing_value",
+    "bezier_by_differences",
+    "raster_delta",
+    "pixels_along",
+    "rasterize",
+    "find_gaps",
+    "drift",
+]
+
+# Below this step a rasterisation would march more than ten million points.
+MIN_RASTER_DELTA = 1e-7
+
+
+def forward_difference_table(values) -> list[np.ndarray]:
+    """The difference table of n+1 values f(t0), ..., f(t0 + n δ). Notes ch. 4.
+
+    values: (n+1,) or (n+1, d). Returns a list of n+1 arrays; row j holds
+    Δʲ(t_i) for i = 0..n-j, shape (n+1-j,) or (n+1-j, d). Row 0 is a copy of
+    the values, the last row is the single n-th difference.
+    """
+    return difference_table(as_coefficients(values, "values"))
+
+
+def initial_differences(values) -> np.ndarray:
+    """The left column of the difference table: f(t0), Δ¹(t0), ..., Δⁿ(t0), shape (n+1,) or (n+1, d). Notes ch. 4."""
+    return np.array([row[0] for row in forward_difference_table(values)])
+
+
+def _stirling_differences(n: int) -> np.ndarray:
+    """(n+1, n+1) matrix D with D[j, k] = j! S(k, j): the j-th difference at 0, step 1, of the monomial uᵏ.
+
+    S(k, j) are the Stirling numbers of the second kind, built row by row from
+    S(k, j) = j S(k-1, j) + S(k-1, j-1); j! S(k, j) is the number of maps of k
+    objects onto j. With S(2, 2) = S(3, 3) = 1 this gives the 2 a₂ δ² and 6 a₃ δ³ of the notes.
+    """
+    stirling = np.zeros((n + 1, n + 1))
+    stirling[0, 0] = 1.0
+    for k in range(1, n + 1):
+        for j in range(1, k + 1):
+            stirling[k, j] = j * stirling[k - 1, j] + stirling[k - 1, j - 1]
+    factorials = np.array([factorial(j) for j in range(n + 1)], dtype=float)
+    return factorials[:, None] * stirling.T
+
+
+def power_differences(coeffs, t0: float = 0.0, delta: float = 1.0) -> np.ndarray:
+    """Starting differences f(t0), Δ¹(t0), ..., Δⁿ(t0) of a power-form polynomial for step δ. Notes ch. 4.
+
+    coeffs: ascending power coefficients (n+1,) or (n+1, d). The polynomial is
+    first rewritten in the step count u, q(u) = f(t0 + δ u) = Σ q_k uᵏ with
+    q_k = b_k δᵏ (b_k its coefficients about t0); then Δʲ(t0) = j! Σ_k S(k, j) q_k.
+    For t0 = 0 and n = 3 this is the notes' Δ¹ = a₁δ + a₂δ² + a₃δ³,
+    Δ² = 2a₂δ² + 6a₃δ³, Δ³ = 6a₃δ³. No differences of nearby values are taken,
+    so the small high-order differences keep their full relative precision.
+    Returns shape (n+1,) or (n+1, d).
+    """
+    a = as_coefficients(coeffs)
+    t0 = as_scalar(t0, "t0")
+    delta = as_scalar(delta, "delta")
+    # Stepping f by δ from t0 is stepping q by 1 from 0, so unit-step differences of q are the ones wanted.
+    q = substitute_affine(a, t0, delta)
+    return np.tensordot(_stirling_differences(len(a) - 1), q, axes=1)
+
+
+def _float_type(dtype) -> np.dtype:
+    try:
+        kind = np.dtype(dtype)
+    except TypeError:
+        raise TypeError(f"dtype: expected a floating-point type such as numpy.float32, got {dtype!r}") from None
+    if kind.kind != "f":
+        raise TypeError(f"dtype: expected a floating-point type such as numpy.float32, got {kind}")
+    return kind
+
+
+def forward_difference_steps(differences, count: int, dtype=np.float64) -> np.ndarray:
+    """March the difference column `count` steps: the values f(t0), ..., f(t0 + (count-1) δ). Notes ch. 4.
+
+    differences: the column f(t0), Δ¹(t0), ..., Δⁿ(t0), shape (n+1,) or (n+1, d).
+    Each step costs n additions per column and no multiplication. The
+    arithmetic runs in `dtype` (float64 by default; float32 shows the drift).
+    Returns shape (count,) or (count, d) in that dtype.
+    """
+    kind = _float_type(dtype)
+    column = as_coefficients(differences, "differences").astype(kind)
+    count = as_count(count, "count")
+    values = np.empty((count,) + column.shape[1:], dtype=kind)
+    for k in range(count):
+        values[k] = column[0]
+        # Every Δʲ moves one step right using the old Δʲ⁺¹ beneath it (the table's
+        # rule R_right = R + R_down); the right side is built before anything is stored.
+        column[:-1] = column[:-1] + column[1:]
+    return values
+
+
+def forward_difference_eval(coeffs, t0: float, delta: float, count: int, dtype=np.float64) -> np.ndarray:
+    """Values of a power-form polynomial at t0 + k δ, k = 0..count-1, by forward differencing. Notes ch. 4.
+
+    coeffs: ascending power coefficients (n+1,) or (n+1, d). The starting
+    differences come from `power_differences`; every further value costs n
+    additions (`forward_difference_steps`). Returns shape (count,) or (count, d).
+    """
+    start = power_differences(coeffs, t0, delta)
+    return forward_difference_steps(start, count, dtype)
+
+
+def missing_value(values, index: int):
+    """The entry `values[index]` that makes n+1 values those of a polynomial of degree n-1. Notes ch. 4 (example).
+
+    values: (n+1,) or (n+1, d), n >= 1; whatever stands at `index` is ignored.
+    Values of a degree n-1 polynomial have Δⁿ = Σ_i (-1)ⁿ⁻ⁱ C(n, i) f_i = 0, an
+    equation linear in the unknown entry. Returns a float, or shape (d,).
+    """
+    f = as_coefficients(values, "values")
+    n = len(f) - 1
+    if n < 1:
+        raise ValueError(f"values: expected at least two values, got shape {f.shape}")
+    index = as_count(index, "index")
+    if index > n:
+        raise ValueError(f"index: expected 0 <= index <= {n}, got {index}")
+    signs = np.array([(-1) ** (n - i) * comb(n, i) for i in range(n + 1)], dtype=float)
+    known = np.arange(n + 1) != index
+    rest = np.tensordot(signs[known], f[known], axes=1)
+    found = -rest / signs[index]
+    return float(found) if f.ndim == 1 else found
+
+
+def bezier_by_differences(points, steps: int) -> np.ndarray:
+    """Points P(k / steps), k = 0..steps, of a Bézier curve by forward differencing, shape (steps+1, d). Notes ch. 4.
+
+    points: control points (n+1, d), converted to power form (`bernstein_to_power`)
+    and marched with δ = 1 / steps.
+    """
+    pts = as_points(points)
+    steps = as_count(steps, "steps", minimum=1)
+    return forward_difference_eval(bernstein_to_power(pts), 0.0, 1.0 / steps, steps + 1)
+
+
+def raster_delta(points) -> float:
+    """A step δ that rasterises a Bézier curve in pixel coordinates without gaps: δ = 1 / (n d). Notes §4.1.
+
+    points: (n+1, d) in pixel units. d is the largest |coordinate difference|
+    of neighbouring control points. The hodograph has control points
+    n (P_{i+1} - P_i), so no coordinate of P' exceeds n d in size, and a step
+    of δ moves every coordinate by at most δ n d = 1 pixel. Capped at 1 (one
+    step for a curve inside one pixel's width, or a single point).
+    """
+    pts = as_points(points)
+    n = len(pts) - 1
+    largest = float(np.abs(np.diff(pts, axis=0)).max()) if n else 0.0
+    return 1.0 / max(n * largest, 1.0)
+
+
+def rasterize(points, delta: float | None = None) -> np.ndarray:
+    """The pixels of a planar Bézier curve, in order along it, shape (m, 2) of ints. Notes §4.1.
+
+    points: (n+1, 2) in pixel units; pixel (i, j) is the square [i, i+1) x [j, j+1).
+    The curve is forward differenced with ceil(1 / δ) equal steps (so the step
+    used is at most δ; default `raster_delta(points)`) and each point paints
+    its pixel (`pixels_along`).
+    """
+    pts = as_points(points)
+    if pts.shape[1] != 2:
+        raise ValueError(f"points: expected planar points of shape (n+1, 2), got shape {pts.shape}")
+    delta = raster_delta(pts) if delta is None else as_scalar(delta, "delta")
+    if not MIN_RASTER_DELTA <= delta <= 1:
+        raise ValueError(f"delta: expected {MIN_RASTER_DELTA:g} <= delta <= 1, got {delta}")
+    return pixels_along(bezier_by_differences(pts, int(np.ceil(1.0 / delta))))
+
+
+def pixels_along(samples) -> np.ndarray:
+    """The pixels that points along a curve fall in, repeats in a row dropped, shape (m, d) of ints. Notes §4.1.
+
+    samples: (k, d) points in pixel units, in order; pixel (i, j) is the square
+    [i, i+1) x [j, j+1), so a point's pixel is its coordinates rounded down.
+    """
+    pixels = np.floor(as_points(samples, "samples")).astype(int)
+    moved = np.ones(len(pixels), dtype=bool)
+    moved[1:] = np.any(pixels[1:] != pixels[:-1], axis=1)
+    return pixels[moved]
+
+
+def find_gaps(pixels) -> np.ndarray:
+    """Positions i where pixel i+1 does not touch pixel i (not even at a corner), shape (g,) of ints. Notes §4.1.
+
+    pixels: (m, 2) integer pixel coordinates in order along a curve. A drawing
+    without gaps has every pair of consecutive pixels at most one apart in x and in y.
+    """
+    p = as_points(pixels, "pixels")
+    jumps = np.abs(np.diff(p, axis=0)).max(axis=1) if len(p) > 1 else np.zeros(0)
+    return np.flatnonzero(jumps > 1)
+
+
+def drift(coeffs, t0: float, delta: float, count: int, dtype=np.float32) -> tuple[np.ndarray, np.ndarray]:
+    """Rounding errors of forward differencing and of Horner's rule, both run in `dtype`, step by step.
+
+    coeffs: ascending power coefficients (n+1,) or (n+1, d). Both methods
+    evaluate at t0 + k δ, k = 0..count-1, with everything (coefficients,
+    differences, parameters) rounded to `dtype`; each is compared with Horner's
+    rule in float64 and the largest error over the columns is kept. Returns
+    (forward_error, horner_error), each of shape (count,). For dtype float64
+    the Horner error is zero by construction and the forward error is the
+    drift against Horner. Notes ch. 4.
+    """
+    a = as_coefficients(coeffs)
+    kind = _float_type(dtype)
+    t = as_scalar(t0, "t0") + as_scalar(delta, "delta") * np.arange(as_count(count, "count"))
+    columns = (len(t), a[0].size)
+    exact = np.reshape(horner(a, t), columns)
+    forward = np.reshape(forward_difference_eval(a, t0, delta, len(t), kind), columns)
+    # NumPy's polyval is Horner's rule and keeps the dtype of its inputs.
+    low = np.polynomial.polynomial.polyval(t.astype(kind), a.astype(kind).reshape(len(a), -1), tensor=True).T
+    forward_error = np.abs(forward.astype(float) - exact).max(axis=1, initial=0.0)
+    horner_error = np.abs(low.astype(float) - exact).max(axis=1, initial=0.0)
+    return forward_error, horner_error

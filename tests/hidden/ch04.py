@@ -1,0 +1,129 @@
+"""Hidden grading suite of chapter 4: forward differencing.
+
+Fixed cases reuse the numbers of the notes (the cubic with values 1, 2, 4, 8, 15
+at t = 1..5, the degree 1, 2 and 3 loops, a degree-four table); edge cases probe
+a single value, degree 0, zero and negative steps, count 0 and 1, and several
+polynomials at once as the columns of an (n+1, d) array; random cases come from
+the generator the grader passes in.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from cagd_ref import forward_differencing
+from cagd_ref.grading.suite import Case, Exercise, Raises, close
+
+NOTES = "notes example"
+EDGE = "edge cases"
+RANDOM = "random"
+BAD = "bad input"
+
+NOTES_VALUES = [1.0, 2.0, 4.0, 8.0, 15.0]  # the notes' cubic at t = 1..5, with the missing 8 filled in
+NOTES_CUBIC = [0.0, 4 / 3, -1 / 2, 1 / 6]  # the same cubic in power form: (t³ - 3t² + 8t) / 6
+CURVE = [(0.0, 1.0), (1.0, 0.0), (2.0, -1.0), (3.0, 0.5)]  # x(t) and y(t) of a cubic curve, power form
+
+
+def _shape(rng):
+    """(n+1,) or (n+1, d) for a random degree 0..6 and, half the time, d = 1..3 columns."""
+    n = int(rng.integers(0, 7))
+    return (n + 1,) if rng.uniform() < 0.5 else (n + 1, int(rng.integers(1, 4)))
+
+
+def rows_close(rtol: float, atol: float):
+    """Compare a difference table row by row: a list (or tuple) of rows, each with the expected shape."""
+    numbers = close(rtol, atol)
+
+    def compare(expected, received):
+        if not isinstance(expected, list) or isinstance(received, Raises):  # an error expected or raised
+            return numbers(expected if isinstance(expected, Raises) else tuple(expected), received)
+        if not isinstance(received, (list, tuple)):
+            return f"expected a list of {len(expected)} rows, got {type(received).__name__}"
+        if len(received) != len(expected):
+            return f"expected a list of {len(expected)} rows (Δ⁰ ... Δⁿ), got {len(received)}"
+        for j, (row, got) in enumerate(zip(expected, received)):
+            problem = numbers(row, got)
+            if problem:
+                return f"row {j}: {problem}"
+        return None
+
+    return compare
+
+
+# --- 04.forward_difference_table -------------------------------------------------------
+
+
+def table_cases(rng):
+    cases = [
+        Case(NOTES, (NOTES_VALUES,), visible=True),
+        Case(NOTES, ([0.0, 1.0, 16.0, 81.0, 256.0],), visible=True),  # t⁴ at 0..4: a degree-four table
+        Case(NOTES, ([1.0, 2.0, 4.0, 8.0, 15.0, 26.0, 42.0],), visible=True),
+        Case(EDGE, ([3.5],), visible=True),  # one value: a table of one row
+        Case(EDGE, ([2.0, -5.0],), visible=True),
+        Case(EDGE, ([4.0, 4.0, 4.0],), visible=True),
+        Case(EDGE, ([(1.0, 0.0), (2.0, 1.0), (4.0, 4.0), (8.0, 9.0)],), visible=True),  # two polynomials
+        Case(EDGE, ([(1.0, 2.0, 3.0), (0.5, 0.0, -1.0), (0.25, -2.0, 1.0)],), visible=True),
+        Case(EDGE, ([(7.0, -7.0)],), visible=True),
+        Case(EDGE, (np.array([3, 1, 4, 1, 5]),), visible=True),  # integers in, floats out
+    ]
+    for _ in range(14):
+        cases.append(Case(RANDOM, (rng.uniform(-10, 10, _shape(rng)),)))
+    cases += [
+        Case(BAD, ([],)),
+        Case(BAD, (np.zeros((2, 2, 2)),)),
+    ]
+    return cases
+
+
+# --- 04.forward_difference_eval --------------------------------------------------------
+
+
+def eval_cases(rng):
+    cases = [
+        Case(NOTES, (NOTES_CUBIC, 1.0, 1.0, 7), visible=True),  # 1, 2, 4, 8, 15, 26, 42
+        Case(NOTES, ([2.0, 3.0], 0.0, 0.25, 5), visible=True),  # degree 1: one addition per step
+        Case(NOTES, ([1.0, -2.0, 0.5], 0.0, 0.1, 11), visible=True),  # degree 2
+        Case(NOTES, ([0.5, 1.0, -3.0, 2.0], 0.0, 1 / 16, 17), visible=True),  # degree 3
+        Case(EDGE, ([7.0], 0.3, 0.1, 4), visible=True),  # degree 0: a constant
+        Case(EDGE, ([1.0, 2.0, 3.0], 2.0, 0.5, 0), visible=True),  # no values at all
+        Case(EDGE, ([1.0, 2.0, 3.0], -1.0, 0.5, 1), visible=True),
+        Case(EDGE, ([1.0, 2.0, 3.0], 2.0, 0.0, 3), visible=True),  # δ = 0 repeats f(t0)
+        Case(EDGE, ([1.0, 2.0, 3.0, -1.0], 0.5, -0.25, 9), visible=True),  # stepping backwards
+        Case(EDGE, (CURVE, 0.25, 0.125, 6), visible=True),  # a planar cubic curve
+        Case(EDGE, (CURVE, 0.0, 0.1, 0), visible=True),
+        Case(EDGE, ([[1.0], [0.0], [2.0]], -0.5, 0.25, 5), visible=True),  # one column stays a column
+        Case(EDGE, ([1.0, -1.0, 0.5, 0.25, -0.125, 0.1, 0.05], -1.0, 0.05, 60), visible=True),
+    ]
+    for _ in range(16):
+        coeffs = rng.uniform(-5, 5, _shape(rng))
+        step = float(rng.uniform(0.02, 0.3)) * float(rng.choice([-1, 1]))
+        cases.append(Case(RANDOM, (coeffs, float(rng.uniform(-1, 1)), step, int(rng.integers(1, 31)))))
+    cases += [
+        Case(BAD, ([1.0, 2.0], 0.0, 0.1, -1)),
+        Case(BAD, ([1.0, 2.0], 0.0, 0.1, 2.5)),
+        Case(BAD, ([], 0.0, 0.1, 3)),
+        Case(BAD, (np.zeros((2, 2, 2)), 0.0, 0.1, 3)),
+    ]
+    return cases
+
+
+EXERCISES = [
+    Exercise(
+        id="04.forward_difference_table",
+        reference=forward_differencing.forward_difference_table,
+        cases=table_cases,
+        compare=rows_close(1e-9, 1e-9),
+        hint="Return a list of n+1 rows: row 0 is the values, row j holds next-minus-previous of row j-1, and the "
+        "last row is a single number. For an (n+1, d) array take the differences down the rows (axis 0), "
+        "not across the coordinates.",
+    ),
+    Exercise(
+        id="04.forward_difference_eval",
+        reference=forward_differencing.forward_difference_eval,
+        cases=eval_cases,
+        compare=close(1e-6, 1e-6),
+        hint="Start from f(t0), Δ¹(t0), ..., Δⁿ(t0) (for example the difference table of f at t0, t0+δ, ..., "
+        "t0+nδ). Each step records f, then updates f += Δ¹, Δ¹ += Δ², ... using the old value below each one. "
+        "Return exactly `count` values; an (n+1,) input gives (count,), an (n+1, d) input gives (count, d).",
+    ),
+]

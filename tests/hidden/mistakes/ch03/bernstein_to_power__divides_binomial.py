@@ -1,0 +1,17 @@
+"""Divides the differences by C(n, j) (the other direction's step) instead of multiplying."""
+from math import comb
+
+import numpy as np
+
+
+def bernstein_to_power(coeffs):
+    b = np.array(coeffs, dtype=float)
+    if b.ndim not in (1, 2) or len(b) == 0 or not np.all(np.isfinite(b)):
+        raise ValueError("coeffs must be finite numbers of shape (n+1,) or (n+1, d)")
+    n = len(b) - 1
+    row, column = b, [b[0]]
+    while len(row) > 1:
+        row = row[1:] - row[:-1]
+        column.append(row[0])
+    scale = np.array([comb(n, j) for j in range(n + 1)], dtype=float)
+    return np.array(column) / scale.reshape((-1,) + (1,) * (b.ndim - 1))

@@ -1,0 +1,18 @@
+"""Multiplies the power coefficients by C(n, j) (the other direction's step) instead of dividing."""
+from math import comb
+
+import numpy as np
+
+
+def power_to_bernstein(coeffs):
+    a = np.array(coeffs, dtype=float)
+    if a.ndim not in (1, 2) or len(a) == 0 or not np.all(np.isfinite(a)):
+        raise ValueError("coeffs must be finite numbers of shape (n+1,) or (n+1, d)")
+    n = len(a) - 1
+    scale = np.array([comb(n, j) for j in range(n + 1)], dtype=float)
+    column = a * scale.reshape((-1,) + (1,) * (a.ndim - 1))
+    top = [column[0]]
+    while len(column) > 1:
+        column = column[:-1] + column[1:]
+        top.append(column[0])
+    return np.array(top)

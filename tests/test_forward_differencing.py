@@ -1,0 +1,415 @@
+"""Unit tests of cagd_ref.forward_differencing: evaluation at equally spaced parameters (chapter 4 of the notes)."""
+
+from __future__ import annotations
+
+from math import factorial
+
+import numpy as np
+import pytest
+import sympy as sp
+from numpy.polynomial import polynomial as npoly
+from scipy.interpolate import BPoly
+
+from cagd_ref import forward_differencing as fd
+from cagd_ref.bezier import de_casteljau
+
+# The notes' worked example: a cubic with f(1..5) = 1, 2, 4, x, 15 and x = 8.
+# Its power form (found by hand from the table, Δ's at t = 1 all equal to one) is (t³ - 3t² + 8t) / 6.
+NOTES_VALUES = [1.0, 2.0, 4.0, 8.0, 15.0]
+NOTES_CUBIC = np.array([0.0, 4 / 3, -1 / 2, 1 / 6])
+PIXEL_CUBIC = np.array([[2.0, 3.0], [10.0, 26.0], [30.0, 28.0], [37.0, 5.0]])
+
+
+def random_poly(seed: int, degree: int, dim: int | None = None) -> np.ndarray:
+    """Ascending power coefficients in [-5, 5], shape (degree+1,) or (degree+1, dim)."""
+    shape = (degree + 1,) if dim is None else (degree + 1, dim)
+    return np.random.default_rng(seed).uniform(-5, 5, shape)
+
+
+def polyval(coeffs, t) -> np.ndarray:
+    """numpy's Horner evaluation, arranged like cagd_ref: (k,) or (k, d)."""
+    return npoly.polyval(np.asarray(t, dtype=float), np.asarray(coeffs, dtype=float), tensor=True).T
+
+
+def test_every_public_name_is_tested():
+    tested = {
+        "forward_difference_table", "initial_differences", "power_differences", "forward_difference_steps",
+        "forward_difference_eval", "missing_value", "bezier_by_differences", "raster_delta", "pixels_along", "rasterize",
+        "find_gaps", "drift",
+    }
+    assert set(fd.__all__) == tested
+
+
+# --- the difference table ------------------------------------------------------------------
+
+
+def test_notes_table_of_the_cubic_example():
+    rows = fd.forward_difference_table(NOTES_VALUES)
+    expected = [[1, 2, 4, 8, 15], [1, 2, 4, 7], [1, 2, 3], [1, 1], [0]]
+    assert [row.tolist() for row in rows] == expected
+    assert all(isinstance(row, np.ndarray) for row in rows)
+
+
+def test_table_rule_right_equals_self_plus_below():
+    values = polyval(random_poly(1, 4), 0.3 + 0.2 * np.arange(9))
+    rows = fd.forward_difference_table(values)
+    assert len(rows) == 9
+    for upper, lower in zip(rows, rows[1:]):
+        np.testing.assert_allclose(upper[1:], upper[:-1] + lower, atol=1e-10)
+
+
+@pytest.mark.parametrize("degree", range(0, 7))
+def test_nth_difference_is_constant_and_the_next_vanishes(degree):
+    a = random_poly(degree, degree)
+    delta = 0.25
+    values = polyval(a, -1.0 + delta * np.arange(degree + 3))
+    rows = fd.forward_difference_table(values)
+    np.testing.assert_allclose(rows[degree], factorial(degree) * a[-1] * delta**degree, rtol=1e-8)
+    np.testing.assert_allclose(rows[degree + 1], 0.0, atol=1e-9)
+
+
+def test_table_works_column_by_column():
+    values = np.column_stack([NOTES_VALUES, np.arange(5.0) ** 2, np.ones(5)])
+    rows = fd.forward_difference_table(values)
+    assert [row.shape for row in rows] == [(5, 3), (4, 3), (3, 3), (2, 3), (1, 3)]
+    for k in range(3):
+        for row, single in zip(rows, fd.forward_difference_table(values[:, k])):
+            np.testing.assert_array_equal(row[:, k], single)
+    np.testing.assert_array_equal(rows[2][:, 1], [2.0, 2.0, 2.0])
+
+
+def test_table_matches_numpy_diff_of_every_order():
+    values = np.random.default_rng(5).uniform(-3, 3, 7)
+    rows = fd.forward_difference_table(values)
+    for j, row in enumerate(rows):
+        np.testing.assert_allclose(row, np.diff(values, n=j), atol=1e-12)
+
+
+def test_table_of_one_value_and_input_unchanged(unchanged):
+    assert [r.tolist() for r in fd.forward_difference_table([3.5])] == [[3.5]]
+    values = np.array(NOTES_VALUES)
+    rows = unchanged(fd.forward_difference_table, values)
+    rows[0][0] = 99.0  # the rows are fresh arrays, not views of the input
+    assert values[0] == 1.0
+
+
+@pytest.mark.parametrize("bad, error", [([], ValueError), (np.zeros((2, 2, 2)), ValueError), ("abc", TypeError),
+                                        ([1.0, np.nan], ValueError)])
+def test_table_rejects_bad_values(bad, error):
+    with pytest.raises(error, match="^values"):
+        fd.forward_difference_table(bad)
+    with pytest.raises(error, match="^values"):
+        fd.initial_differences(bad)
+
+
+def test_initial_differences_are_the_left_column():
+    assert fd.initial_differences(NOTES_VALUES).tolist() == [1.0, 1.0, 1.0, 1.0, 0.0]
+    values = np.random.default_rng(2).uniform(size=(4, 2))
+    column = fd.initial_differences(values)
+    assert column.shape == (4, 2)
+    np.testing.assert_array_equal(column, [row[0] for row in fd.forward_difference_table(values)])
+
+
+# --- starting differences from the power form -----------------------------------------------
+
+
+def test_power_differences_match_the_notes_formulas_for_degrees_1_to_3():
+    a0, a1, a2, a3, d = 0.5, -2.0, 3.0, 1.5, 0.2
+    np.testing.assert_allclose(fd.power_differences([a0, a1], 0, d), [a0, a1 * d])
+    np.testing.assert_allclose(fd.power_differences([a0, a1, a2], 0, d), [a0, a1 * d + a2 * d**2, 2 * a2 * d**2])
+    np.testing.assert_allclose(
+        fd.power_differences([a0, a1, a2, a3], 0.0, d),
+        [a0, a1 * d + a2 * d**2 + a3 * d**3, 2 * a2 * d**2 + 6 * a3 * d**3, 6 * a3 * d**3],
+    )
+
+
+def test_power_differences_agree_with_sympy_for_any_start():
+    t0, delta, t = sp.Rational(3, 4), sp.Rational(-1, 3), sp.symbols("t")
+    a = [sp.Rational(k * k - 3, k + 2) for k in range(6)]
+    f = sum(c * t**k for k, c in enumerate(a))
+    values = [f.subs(t, t0 + k * delta) for k in range(6)]
+    column = []
+    while values:
+        column.append(values[0])
+        values = [q - p for p, q in zip(values, values[1:])]
+    result = fd.power_differences([float(c) for c in a], float(t0), float(delta))
+    np.testing.assert_allclose(result, [float(c) for c in column], rtol=1e-12, atol=1e-14)
+
+
+@pytest.mark.parametrize("degree", range(0, 8))
+def test_power_differences_agree_with_differences_of_values(degree):
+    a = random_poly(10 + degree, degree, dim=2)
+    t0, delta = -0.7, 0.3
+    values = polyval(a, t0 + delta * np.arange(degree + 1))
+    np.testing.assert_allclose(fd.power_differences(a, t0, delta), fd.initial_differences(values), atol=1e-9)
+
+
+def test_power_differences_keep_tiny_high_differences_exact():
+    # From values of size 1 the third difference 6e-9 would lose half its digits; the formula does not.
+    a = np.array([1.0, 1.0, 1.0, 1.0])
+    column = fd.power_differences(a, 0.0, 1e-3)
+    assert column[3] == pytest.approx(6e-9, rel=1e-15)
+    from_values = fd.initial_differences(polyval(a, 1e-3 * np.arange(4)))
+    assert abs(from_values[3] / 6e-9 - 1) > 1e-12
+
+
+def test_power_differences_defaults_and_bad_input(unchanged):
+    a = np.array([1.0, 2.0, 3.0])
+    np.testing.assert_allclose(unchanged(fd.power_differences, a), [1.0, 5.0, 6.0])  # f(0), f(1)-f(0), 2 a2
+    with pytest.raises(ValueError, match="^t0"):
+        fd.power_differences(a, [0.0, 1.0])
+    with pytest.raises(ValueError, match="^delta"):
+        fd.power_differences(a, 0.0, np.inf)
+    with pytest.raises(ValueError, match="^coeffs"):
+        fd.power_differences(np.zeros((0,)))
+
+
+# --- marching the differences ---------------------------------------------------------------
+
+
+def test_steps_continue_the_notes_table():
+    values = fd.forward_difference_steps([1.0, 1.0, 1.0, 1.0], 7)
+    assert values.tolist() == [1.0, 2.0, 4.0, 8.0, 15.0, 26.0, 42.0]
+    assert values.dtype == np.float64
+
+
+def test_steps_in_float32_and_column_by_column():
+    column = np.array([[0.0, 1.0], [0.1, -1.0], [0.02, 0.5]])
+    values = fd.forward_difference_steps(column, 5, dtype=np.float32)
+    assert values.dtype == np.float32 and values.shape == (5, 2)
+    expected = np.column_stack([fd.forward_difference_steps(column[:, k], 5) for k in range(2)])
+    np.testing.assert_allclose(values, expected, rtol=1e-6)
+
+
+def test_steps_edge_counts_and_bad_input(unchanged):
+    column = np.array([2.0, 3.0])
+    assert unchanged(fd.forward_difference_steps, column, 0).shape == (0,)
+    assert fd.forward_difference_steps(column, 1).tolist() == [2.0]
+    assert fd.forward_difference_steps([[1.0, 2.0]], 3).tolist() == [[1.0, 2.0]] * 3  # degree 0: constant
+    with pytest.raises(ValueError, match="^count"):
+        fd.forward_difference_steps(column, -1)
+    with pytest.raises(TypeError, match="^count"):
+        fd.forward_difference_steps(column, 2.5)
+    with pytest.raises(TypeError, match="^dtype"):
+        fd.forward_difference_steps(column, 3, dtype=np.int32)
+    with pytest.raises(TypeError, match="^dtype"):
+        fd.forward_difference_steps(column, 3, dtype="no such type")
+    with pytest.raises(ValueError, match="^differences"):
+        fd.forward_difference_steps(np.zeros((2, 2, 1)), 3)
+
+
+# --- forward_difference_eval ------------------------------------------------------------------
+
+
+def notes_quadratic_loop(a0, a1, a2, delta, k):
+    """The notes' improved degree-2 loop, transcribed literally: f += Δ1; Δ1 += Δ2."""
+    f, d1, d2 = a0, a1 * delta + a2 * delta**2, 2 * a2 * delta**2
+    out = [f]
+    for _ in range(k):
+        f += d1
+        d1 += d2
+        out.append(f)
+    return out
+
+
+def notes_cubic_loop(a, delta, k):
+    """The notes' degree-3 loop, transcribed literally."""
+    a0, a1, a2, a3 = a
+    f = a0
+    d1 = a1 * delta + a2 * delta**2 + a3 * delta**3
+    d2 = 2 * a2 * delta**2 + 6 * a3 * delta**3
+    d3 = 6 * a3 * delta**3
+    out = [f]
+    for _ in range(k):
+        f += d1
+        d1 += d2
+        d2 += d3
+        out.append(f)
+    return out
+
+
+def test_eval_repeats_the_notes_loops_for_degrees_1_2_3():
+    np.testing.assert_allclose(fd.forward_difference_eval([2.0, 3.0], 0, 0.25, 5), [2.0, 2.75, 3.5, 4.25, 5.0])
+    np.testing.assert_allclose(fd.forward_difference_eval([1.0, -2.0, 0.5], 0, 0.1, 21),
+                               notes_quadratic_loop(1.0, -2.0, 0.5, 0.1, 20), rtol=1e-13)
+    a = [0.5, 1.0, -3.0, 2.0]
+    np.testing.assert_allclose(fd.forward_difference_eval(a, 0, 1 / 16, 17), notes_cubic_loop(a, 1 / 16, 16), rtol=1e-13)
+
+
+def test_eval_of_the_notes_cubic_example():
+    values = fd.forward_difference_eval(NOTES_CUBIC, 1.0, 1.0, 7)
+    np.testing.assert_allclose(values, [1, 2, 4, 8, 15, 26, 42], atol=1e-12)
+
+
+@pytest.mark.parametrize("degree", range(0, 8))
+@pytest.mark.parametrize("dim", [None, 1, 3])
+def test_eval_matches_numpy_polyval(degree, dim):
+    a = random_poly(100 * degree + (dim or 0), degree, dim)
+    t0, delta, count = 0.4, -0.05, 40
+    values = fd.forward_difference_eval(a, t0, delta, count)
+    expected = polyval(a, t0 + delta * np.arange(count))
+    assert values.shape == expected.shape == ((count,) if dim is None else (count, dim))
+    np.testing.assert_allclose(values, expected, rtol=1e-10, atol=1e-10)
+
+
+def test_eval_with_zero_step_and_small_counts(unchanged):
+    a = np.array([1.0, 2.0, 3.0])
+    np.testing.assert_allclose(unchanged(fd.forward_difference_eval, a, 2.0, 0.0, 4), [17.0] * 4)
+    assert fd.forward_difference_eval(a, 2.0, 0.5, 0).shape == (0,)
+    assert fd.forward_difference_eval(a[:, None], 2.0, 0.5, 0).shape == (0, 1)
+    np.testing.assert_allclose(fd.forward_difference_eval(a, -1.0, 0.5, 1), [2.0])
+
+
+@pytest.mark.parametrize("args, error, name", [
+    (([1.0, 2.0], 0.0, 0.1, -1), ValueError, "count"),
+    (([1.0, 2.0], 0.0, 0.1, 3.0), TypeError, "count"),
+    (([1.0, 2.0], [0.0], 0.1, 3), ValueError, "t0"),
+    (([1.0, 2.0], 0.0, np.nan, 3), ValueError, "delta"),
+    ((np.zeros((2, 2, 2)), 0.0, 0.1, 3), ValueError, "coeffs"),
+    (([], 0.0, 0.1, 3), ValueError, "coeffs"),
+])
+def test_eval_rejects_bad_input(args, error, name):
+    with pytest.raises(error, match=f"^{name}"):
+        fd.forward_difference_eval(*args)
+
+
+# --- the notes' missing value ---------------------------------------------------------------------
+
+
+def test_missing_value_of_the_notes_example_is_eight():
+    assert fd.missing_value([1.0, 2.0, 4.0, 0.0, 15.0], 3) == 8.0
+    assert fd.missing_value([1.0, 2.0, 4.0, -123.0, 15.0], 3) == 8.0  # the placeholder is ignored
+
+
+@pytest.mark.parametrize("index", range(6))
+def test_missing_value_recovers_any_entry_of_a_polynomial(index, unchanged):
+    a = random_poly(index, 4, dim=2)
+    values = polyval(a, 0.5 * np.arange(6))
+    holed = values.copy()
+    holed[index] = 0.0
+    found = unchanged(fd.missing_value, holed, index)
+    assert found.shape == (2,)
+    np.testing.assert_allclose(found, values[index], atol=1e-9)
+    # the answer agrees with a fit through the other five points by numpy
+    keep = np.arange(6) != index
+    fit = npoly.polyfit(0.5 * np.arange(6)[keep], values[keep], 4)
+    np.testing.assert_allclose(found, polyval(fit, 0.5 * index), atol=1e-7)
+
+
+def test_missing_value_rejects_bad_input():
+    with pytest.raises(ValueError, match="^values"):
+        fd.missing_value([1.0], 0)
+    with pytest.raises(ValueError, match="^index"):
+        fd.missing_value([1.0, 2.0, 3.0], 3)
+    with pytest.raises(TypeError, match="^index"):
+        fd.missing_value([1.0, 2.0, 3.0], 1.0)
+
+
+# --- Bézier curves, rasterisation ----------------------------------------------------------------
+
+
+@pytest.mark.parametrize("degree", range(0, 6))
+def test_bezier_by_differences_matches_de_casteljau_and_scipy(degree):
+    points = np.random.default_rng(degree).uniform(-10, 10, (degree + 1, 2))
+    steps = 25
+    t = np.linspace(0, 1, steps + 1)
+    values = fd.bezier_by_differences(points, steps)
+    np.testing.assert_allclose(values, de_casteljau(points, t), atol=1e-10)
+    np.testing.assert_allclose(values, BPoly(points[:, None, :], [0, 1])(t), atol=1e-10)
+
+
+def test_bezier_by_differences_rejects_bad_input(unchanged):
+    unchanged(fd.bezier_by_differences, PIXEL_CUBIC, 3)
+    with pytest.raises(ValueError, match="^steps"):
+        fd.bezier_by_differences(PIXEL_CUBIC, 0)
+    with pytest.raises(ValueError, match="^points"):
+        fd.bezier_by_differences([1.0, 2.0], 4)
+
+
+def test_raster_delta_follows_the_notes_formula():
+    # Largest neighbour difference: 23 (in y, twice); n = 3, so n d = 69.
+    assert fd.raster_delta(PIXEL_CUBIC) == pytest.approx(1 / 69)
+    assert fd.raster_delta([[0.0, 0.0], [3.0, -1.0]]) == pytest.approx(1 / 3)
+    assert fd.raster_delta([[4.0, 4.0]]) == 1.0  # a single point needs one step
+    assert fd.raster_delta([[4.0, 4.0], [4.0, 4.0], [4.2, 4.0]]) == 1.0  # capped at one step
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_the_raster_step_never_moves_a_coordinate_more_than_one_pixel(seed):
+    rng = np.random.default_rng(seed)
+    points = rng.uniform(0, 60, (int(rng.integers(2, 7)), 2))
+    delta = fd.raster_delta(points)
+    steps = int(np.ceil(1 / delta))
+    curve = fd.bezier_by_differences(points, steps)
+    assert np.abs(np.diff(curve, axis=0)).max() <= 1 + 1e-12
+    # the hodograph bound is reached or beaten by the true largest speed
+    dense = de_casteljau(points, np.linspace(0, 1, 4001))
+    assert np.abs(np.diff(dense, axis=0)).max() * 4000 <= 1 / delta + 1e-6
+    pixels = fd.rasterize(points)
+    assert len(fd.find_gaps(pixels)) == 0
+    np.testing.assert_array_equal(pixels[0], np.floor(points[0]))
+    np.testing.assert_array_equal(pixels[-1], np.floor(points[-1]))
+    assert np.all(np.any(pixels[1:] != pixels[:-1], axis=1))
+
+
+def test_rasterize_a_line_and_a_too_large_step(unchanged):
+    line = np.array([[0.5, 0.5], [6.5, 0.5]])
+    assert unchanged(fd.rasterize, line).tolist() == [[k, 0] for k in range(7)]
+    assert fd.rasterize(line, 0.5).tolist() == [[0, 0], [3, 0], [6, 0]]
+    pixels = fd.rasterize(PIXEL_CUBIC, 4 * fd.raster_delta(PIXEL_CUBIC))
+    assert len(fd.find_gaps(pixels)) > 0
+    assert fd.rasterize(PIXEL_CUBIC).dtype.kind == "i"
+
+
+def test_rasterize_rejects_bad_input():
+    with pytest.raises(ValueError, match="^points"):
+        fd.rasterize(np.zeros((3, 3)))
+    with pytest.raises(ValueError, match="^delta"):
+        fd.rasterize(PIXEL_CUBIC, 0.0)
+    with pytest.raises(ValueError, match="^delta"):
+        fd.rasterize(PIXEL_CUBIC, 1.5)
+    with pytest.raises(ValueError, match="^delta"):
+        fd.rasterize(PIXEL_CUBIC, [0.1, 0.2])
+
+
+def test_pixels_along_floors_and_drops_repeats(unchanged):
+    samples = np.array([[0.2, 0.9], [0.7, 0.95], [1.0, 1.0], [-0.5, 1.999], [-0.5, 2.0]])
+    assert unchanged(fd.pixels_along, samples).tolist() == [[0, 0], [1, 1], [-1, 1], [-1, 2]]
+    assert fd.pixels_along([[3.5, 3.5, 3.5]]).tolist() == [[3, 3, 3]]
+    with pytest.raises(ValueError, match="^samples"):
+        fd.pixels_along([0.5, 1.5])
+
+
+def test_find_gaps_counts_jumps_of_more_than_one_pixel():
+    pixels = [[0, 0], [1, 1], [3, 1], [3, 2], [3, 4], [4, 5]]
+    assert fd.find_gaps(pixels).tolist() == [1, 3]
+    assert fd.find_gaps([[2, 2]]).tolist() == []
+    assert fd.find_gaps([[0, 0], [1, 1], [2, 0]]).tolist() == []
+    with pytest.raises(ValueError, match="^pixels"):
+        fd.find_gaps([1, 2, 3])
+
+
+# --- drift ----------------------------------------------------------------------------------------
+
+
+def test_float32_forward_differencing_drifts_while_horner_does_not():
+    a = np.array([0.0, 1.0, 2.0, 3.0])
+    forward, horner32 = fd.drift(a, 0.0, 1e-3, 5000)
+    assert forward.shape == horner32.shape == (5000,)
+    assert forward[0] == 0.0 or forward[0] < 1e-6
+    assert forward[-1] > 100 * horner32[-1]
+    assert forward[-1] > 100 * forward[100]
+    # Horner's error stays at the size of the float32 rounding of the values
+    values = npoly.polyval(1e-3 * np.arange(5000), a)
+    assert np.all(horner32 <= 1e-6 * (1 + np.abs(values)))
+
+
+def test_float64_drift_is_small_and_horner_is_the_yardstick(unchanged):
+    a = np.array([[0.0, 1.0], [1.0, 0.0], [2.0, -1.0], [3.0, 0.5]])
+    forward, horner64 = unchanged(fd.drift, a, 0.0, 1e-3, 2000, np.float64)
+    assert np.all(horner64 == 0.0)
+    assert 0 < forward[-1] < 1e-9
+    empty = fd.drift(a, 0.0, 1e-3, 0)
+    assert empty[0].shape == empty[1].shape == (0,)
+    with pytest.raises(TypeError, match="^dtype"):
+        fd.drift(a, 0.0, 1e-3, 10, dtype=int)
