@@ -40,6 +40,27 @@ CONTRACT = {
         "bernstein_multiply": ["f", "g"],
         "bernstein_integral": ["coeffs"],
     },
+    "cagd_ref.forward_differencing": {
+        "forward_difference_table": ["values"],
+        "forward_difference_eval": ["coeffs", "t0", "delta", "count"],
+    },
+    "cagd_ref.blending": {
+        "timmer_basis": ["t"],
+        "ball_basis": ["t"],
+        "overhauser_point": ["points", "t"],
+        "timmer_to_bezier": ["points"],
+    },
+    "cagd_ref.bspline": {
+        "de_boor": ["points", "knots", "t"],
+        "insert_knot": ["points", "knots", "t"],
+        "bezier_segments": ["points", "knots"],
+        "blossom": ["points", "knots", "args"],
+        "bspline_basis": ["knots", "degree", "i", "t"],
+        "greville": ["knots", "degree"],
+    },
+    "cagd_ref.roots": {
+        "bernstein_roots": ["coeffs", "interval", "tol"],
+    },
 }
 
 

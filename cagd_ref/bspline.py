@@ -1,0 +1,685 @@
+"""B-spline curves in polar form: chapter 6 of the notes.
+
+Knot vectors follow the notes, not the usual textbook convention: a degree-n
+B-spline with c control points has c + n - 1 knots t_0 ... t_{c+n-2} and no
+dummy end knots. Control point i is the polar value f(t_i, ..., t_{i+n-1}),
+the curve is defined over the domain [t_{n-1}, t_{c-1}], and the degree is
+len(knots) - len(points) + 1. `to_scipy` / `from_scipy` convert to the
+c + n + 1 convention of SciPy and most software.
+
+Knots must not decrease and no knot value may appear more than n times, so
+the curve is at least C0. Points are (c, d) float arrays; a parameter t is a
+number (one point (d,) comes back) or a 1-D array of k values ((k, d)).
+
+Evaluation at a knot uses the span to its right (the curve is continuous, but
+derivatives at a knot of reduced continuity are right-hand ones), except at
+the end of the domain, where the last span is used.
+"""
+
+from __future__ import annotations
+
+from math import comb
+
+import numpy as np
+
+from .bezier import hodograph as bezier_hodograph
+from ._validation import as_count, as_float_array, as_parameter, as_points, as_scalar
+
+__all__ = [
+    "de_boor",
+    "de_boor_triangle",
+    "insert_knot",
+    "insert_knots",
+    "bezier_segments",
+    "bezier_segment_intervals",
+    "blossom",
+    "bezier_blossom",
+    "power_blossom",
+    "bspline_basis",
+    "basis_matrix",
+    "greville",
+    "explicit_bspline",
+    "to_scipy",
+    "from_scipy",
+    "degree",
+    "domain",
+    "knot_multiplicities",
+    "continuity_at_knots",
+    "hodograph",
+    "derivative",
+    "elevate",
+    "polar_values",
+    "elevated_polar_values",
+    "bezier_end_knots",
+    "periodic_closed",
+    "circle_approximation",
+    "combine_bezier",
+]
+
+
+# --- input checking ---------------------------------------------------------------------
+
+
+def _as_knots(knots, name: str = "knots") -> np.ndarray:
+    kn = as_float_array(knots, name)
+    if kn.ndim != 1:
+        raise ValueError(f"{name}: expected a 1-D knot vector, got shape {kn.shape}")
+    if np.any(np.diff(kn) < 0):
+        raise ValueError(f"{name}: expected a non-decreasing sequence, got {kn.tolist()}")
+    return kn
+
+
+def _check_knots(kn: np.ndarray, n: int, name: str = "knots") -> None:
+    """Enough knots for one segment, a domain of positive length, multiplicities at most n."""
+    if len(kn) < 2 * n:
+        raise ValueError(
+            f"{name}: a degree-{n} B-spline needs at least {2 * n} knots (n + 1 control points), got {len(kn)}"
+        )
+    c = len(kn) - n + 1
+    if not kn[n - 1] < kn[c - 1]:
+        raise ValueError(f"{name}: the domain [{kn[n - 1]}, {kn[c - 1]}] = [t_(n-1), t_(c-1)] is empty")
+    values, counts = np.unique(kn, return_counts=True)
+    if np.any(counts > n):
+        bad = values[counts > n][0]
+        raise ValueError(
+            f"{name}: the knot {bad} appears {counts[counts > n][0]} times, more than the degree {n}"
+        )
+
+
+def _spline(points, knots) -> tuple[np.ndarray, np.ndarray, int]:
+    """Checked (points (c, d), knots (c+n-1,), degree n) of a B-spline in the notes' convention."""
+    pts = as_points(points)
+    kn = _as_knots(knots)
+    n = len(kn) - len(pts) + 1
+    if n < 1:
+        raise ValueError(
+            f"knots: {len(pts)} control points need len(points) + n - 1 knots for a degree n >= 1, "
+            f"i.e. at least {len(pts)}, got {len(kn)}"
+        )
+    _check_knots(kn, n)
+    return pts, kn, n
+
+
+def _knots_of_degree(knots, degree) -> tuple[np.ndarray, int]:
+    kn = _as_knots(knots)
+    n = as_count(degree, "degree", minimum=1)
+    _check_knots(kn, n)
+    return kn, n
+
+
+def domain(knots, degree: int) -> tuple[float, float]:
+    """The parameter interval [t_(n-1), t_(c-1)] over which the B-spline is defined. Notes §6.2, §6.14."""
+    kn, n = _knots_of_degree(knots, degree)
+    return float(kn[n - 1]), float(kn[len(kn) - n])
+
+
+def _in_domain(ts: np.ndarray, kn: np.ndarray, n: int, name: str = "t") -> None:
+    a, b = kn[n - 1], kn[len(kn) - n]
+    outside = (ts < a) | (ts > b)
+    if np.any(outside):
+        raise ValueError(f"{name}: expected values in the domain [{a}, {b}], got {ts[outside][:5].tolist()}")
+
+
+# --- knot spans and the de Boor triangle ------------------------------------------------
+
+
+def _nonzero_spans(kn: np.ndarray, n: int) -> np.ndarray:
+    """Indices j of the spans [t_j, t_(j+1)] of positive length inside the domain."""
+    j = np.arange(n - 1, len(kn) - n)
+    return j[kn[j] < kn[j + 1]]
+
+
+def _spans(kn: np.ndarray, n: int, ts: np.ndarray) -> np.ndarray:
+    """For each t, the span j with t_j <= t < t_(j+1); the end of the domain takes the last span."""
+    last = _nonzero_spans(kn, n)[-1]
+    return np.minimum(np.searchsorted(kn, ts, side="right") - 1, last)
+
+
+def _gather(pts: np.ndarray, kn: np.ndarray, n: int, spans: np.ndarray):
+    """Control points (k, n+1, d) of each span and the 2n knots t_(j-n+1) ... t_(j+n) around it."""
+    first = spans[:, None] - n + 1
+    return pts[first + np.arange(n + 1)], kn[first + np.arange(2 * n)]
+
+
+def _triangle(local_points: np.ndarray, local_knots: np.ndarray, values: np.ndarray) -> list[np.ndarray]:
+    """All levels of the (polar) de Boor triangle, one per row: level r has shape (k, n+1-r, d).
+
+    values (k, n) holds the argument used at each level: the same t throughout
+    for the de Boor algorithm, the n polar arguments for a blossom. The point of
+    level r with polar label f(u_1..u_r, t_i..t_(i+n-r-1)) is the affine
+    combination of its two parents that replaces knot t_(i-1) (or t_(i+n-r)) by u_r.
+    """
+    n = local_points.shape[1] - 1
+    levels = [local_points]
+    for r in range(1, n + 1):
+        lower = local_knots[:, r - 1 : n]
+        upper = local_knots[:, n : 2 * n - r + 1]
+        alpha = ((values[:, r - 1 : r] - lower) / (upper - lower))[..., None]
+        previous = levels[-1]
+        levels.append((1 - alpha) * previous[:, :-1] + alpha * previous[:, 1:])
+    return levels
+
+
+def de_boor(points, knots, t) -> np.ndarray:
+    """Point(s) of a B-spline curve by the de Boor algorithm, all parameters at once. Notes §6.8.
+
+    points: (c, d); knots: (c+n-1,) in the notes' convention. t: a number in
+    the domain -> (d,), or k numbers -> (k, d). Each t's span is found with a
+    binary search, its n+1 control points are gathered into a (k, n+1, d) array
+    and the triangle of affine combinations runs on all of them together.
+    """
+    pts, kn, n = _spline(points, knots)
+    ts, scalar = as_parameter(t)
+    _in_domain(ts, kn, n)
+    local_points, local_knots = _gather(pts, kn, n, _spans(kn, n, ts))
+    values = np.repeat(ts[:, None], n, axis=1)
+    result = _triangle(local_points, local_knots, values)[-1][:, 0]
+    return result[0] if scalar else result
+
+
+def de_boor_triangle(points, knots, t) -> tuple[list[np.ndarray], int]:
+    """Every level of the de Boor triangle at a number t, and the span index j. Notes §6.8.
+
+    Level r has shape (n+1-r, d): level 0 holds the control points
+    P_(j-n+1) ... P_(j+1) of the span [t_j, t_(j+1)] containing t, the last
+    level the single point P(t).
+    """
+    pts, kn, n = _spline(points, knots)
+    tau = np.array([as_scalar(t, "t")])
+    _in_domain(tau, kn, n)
+    span = _spans(kn, n, tau)
+    local_points, local_knots = _gather(pts, kn, n, span)
+    levels = _triangle(local_points, local_knots, np.repeat(tau[:, None], n, axis=1))
+    return [level[0] for level in levels], int(span[0])
+
+
+# --- knot insertion and Bézier extraction ----------------------------------------------
+
+
+def insert_knot(points, knots, t) -> tuple[np.ndarray, np.ndarray]:
+    """Insert one knot t by Boehm's algorithm: (c+1, d) points and c+n knots, same curve. Notes §6.7.
+
+    With t in the span [t_j, t_(j+1)], the n-1 points P_(j-n+2) ... P_j are
+    replaced by n new ones; new point m (label containing t) is
+    ((t_(m+n-1) - t) P_(m-1) + (t - t_(m-1)) P_m) / (t_(m+n-1) - t_(m-1)).
+    """
+    pts, kn, n = _spline(points, knots)
+    tau = as_scalar(t, "t")
+    _in_domain(np.array([tau]), kn, n)
+    if np.count_nonzero(kn == tau) >= n:
+        raise ValueError(f"t: the knot {tau} already has multiplicity {n} = degree, the most allowed")
+    j = int(_spans(kn, n, np.array([tau]))[0])
+    m = np.arange(j - n + 2, j + 2)
+    alpha = ((tau - kn[m - 1]) / (kn[m + n - 1] - kn[m - 1]))[:, None]
+    new_points = (1 - alpha) * pts[m - 1] + alpha * pts[m]
+    points_out = np.concatenate([pts[: j - n + 2], new_points, pts[j + 1 :]])
+    knots_out = np.concatenate([kn[: j + 1], [tau], kn[j + 1 :]])
+    return points_out, knots_out
+
+
+def insert_knots(points, knots, ts) -> tuple[np.ndarray, np.ndarray]:
+    """Insert several knots one after another (in any order): Notes §6.7. ts: a number or (m,)."""
+    values, _ = as_parameter(ts, "ts")
+    pts, kn, _ = _spline(points, knots)
+    for tau in values:
+        pts, kn = insert_knot(pts, kn, tau)
+    return pts, kn
+
+
+def bezier_segments(points, knots) -> np.ndarray:
+    """Bézier control points of every segment of positive length, in order: shape (s, n+1, d). Notes §6.3, §6.7.
+
+    Every distinct knot value in the domain is inserted until it has
+    multiplicity n; then the n+1 control points of each span [a, b] carry the
+    polar labels f(a, ..., a, b, ..., b), which are its Bézier control points.
+    """
+    pts, kn, n = _spline(points, knots)
+    values, counts = np.unique(kn, return_counts=True)
+    a, b = kn[n - 1], kn[len(kn) - n]
+    inside = (values >= a) & (values <= b)
+    missing = np.repeat(values[inside], n - counts[inside])
+    pts, kn = insert_knots(pts, kn, missing)
+    spans = _nonzero_spans(kn, n)
+    return _gather(pts, kn, n, spans)[0]
+
+
+def bezier_segment_intervals(knots, degree: int) -> np.ndarray:
+    """Parameter intervals [t_j, t_(j+1)] of the segments of positive length, in order: (s, 2). Notes §6.3."""
+    kn, n = _knots_of_degree(knots, degree)
+    spans = _nonzero_spans(kn, n)
+    return np.column_stack([kn[spans], kn[spans + 1]])
+
+
+# --- polar form (blossoms) --------------------------------------------------------------
+
+
+def _as_arguments(args, n: int) -> np.ndarray:
+    u = as_float_array(args, "args")
+    if u.ndim != 1 or len(u) != n:
+        raise ValueError(f"args: a degree-{n} blossom takes {n} arguments, got shape {u.shape}")
+    return u
+
+
+def _segment_blossoms(pts: np.ndarray, kn: np.ndarray, n: int, spans: np.ndarray, args: np.ndarray) -> np.ndarray:
+    """Polar values f_j(args[r]) of the segment over span j = spans[r], one per row: (k, d).
+
+    The polar de Boor triangle: level r uses the r-th argument instead of t.
+    """
+    local_points, local_knots = _gather(pts, kn, n, spans)
+    return _triangle(local_points, local_knots, args)[-1][:, 0]
+
+
+def _span_of_smallest(kn: np.ndarray, n: int, args: np.ndarray) -> np.ndarray:
+    """For each row of arguments, the span containing its smallest one (clipped into the domain)."""
+    a, b = kn[n - 1], kn[len(kn) - n]
+    return _spans(kn, n, np.clip(args.min(axis=1), a, b))
+
+
+def blossom(points, knots, args) -> np.ndarray:
+    """The polar value f(u_1, ..., u_n) of a B-spline curve: shape (d,). Notes §6.1, §6.11.
+
+    Each segment of a B-spline has its own blossom, so the arguments must say
+    which one. Rule: the segment used is the one whose span contains the
+    smallest argument (t_j <= min(args) < t_(j+1), the last span at the end of
+    the domain, the first or last span beyond the domain). Every other segment
+    whose open span meets [min(args), max(args)] must give the same value, or
+    the polar value is ambiguous and a ValueError says so. The labels
+    f(t_i, ..., t_(i+n-1)) = P_i of control points that act on the curve
+    always pass, and so do arguments inside one span. Arguments outside [t_0, t_(c+n-2)] are rejected.
+    """
+    pts, kn, n = _spline(points, knots)
+    u = _as_arguments(args, n)
+    if u.min() < kn[0] or u.max() > kn[-1]:
+        raise ValueError(f"args: expected values within the knot vector [{kn[0]}, {kn[-1]}], got {u.tolist()}")
+    spans = _nonzero_spans(kn, n)
+    chosen = _span_of_smallest(kn, n, u[None, :])
+    others = spans[(kn[spans] < u.max()) & (kn[spans + 1] > u.min())]
+    rows = np.concatenate([chosen, others])
+    values = _segment_blossoms(pts, kn, n, rows, np.repeat(u[None, :], len(rows), axis=0))
+    scale = 1.0 + np.max(np.abs(pts))
+    if np.max(np.abs(values - values[0])) > 1e-9 * scale:
+        raise ValueError(
+            f"args: {u.tolist()} reach over several segments (spans starting at {kn[others].tolist()}) "
+            "whose blossoms differ there, so the polar value is ambiguous"
+        )
+    return values[0]
+
+
+def polar_values(points, knots, labels) -> np.ndarray:
+    """Polar values of a B-spline at many argument rows: labels (k, n) -> (k, d). Notes §6.1.
+
+    Each row is evaluated on the segment whose span contains its smallest
+    argument, as in `blossom`, but without the ambiguity check: use it for
+    labels that are known to be consistent, such as those of refined or
+    degree-raised control points.
+    """
+    pts, kn, n = _spline(points, knots)
+    u = as_float_array(labels, "labels")
+    if u.ndim != 2 or u.shape[1] != n:
+        raise ValueError(f"labels: expected shape (k, {n}), one row of {n} arguments per value, got {u.shape}")
+    return _segment_blossoms(pts, kn, n, _span_of_smallest(kn, n, u), u)
+
+
+def elevated_polar_values(points, knots, labels) -> np.ndarray:
+    """Control points of the degree n+1 form at labels (k, n+1) -> (k, d): the mean of the n+1 polar values without one argument. Notes §6.13.5."""
+    u = as_float_array(labels, "labels")
+    if u.ndim != 2:
+        raise ValueError(f"labels: expected shape (k, n+1), got {u.shape}")
+    keep = ~np.eye(u.shape[1], dtype=bool)
+    # Row (i, j) of `dropped` is label i without its j-th argument.
+    dropped = np.stack([u[:, keep[j]] for j in range(u.shape[1])], axis=1)
+    values = polar_values(points, knots, dropped.reshape(-1, u.shape[1] - 1))
+    return values.reshape(len(u), u.shape[1], -1).mean(axis=1)
+
+
+def bezier_blossom(points, args) -> np.ndarray:
+    """Polar value f(u_1, ..., u_n) of a Bézier curve over [0, 1]: de Casteljau with a new u per level. Notes §6.1.
+
+    points: (n+1, d), args: (n,) -> (d,). Degree 0 takes no arguments.
+    """
+    pts = as_points(points)
+    n = len(pts) - 1
+    u = _as_arguments(args, n)
+    if n == 0:
+        return pts[0].copy()
+    bezier_knots = np.repeat([0.0, 1.0], n)
+    return _segment_blossoms(pts, bezier_knots, n, np.array([n - 1]), u[None, :])[0]
+
+
+def _elementary_symmetric(u: np.ndarray) -> np.ndarray:
+    """e_0 ... e_n of the numbers u, by multiplying out prod (1 + u_i x)."""
+    e = np.zeros(len(u) + 1)
+    e[0] = 1.0
+    for value in u:
+        e[1:] = e[1:] + value * e[:-1]
+    return e
+
+
+def power_blossom(coeffs, args):
+    """Blossom p[u_1, ..., u_n] of p(t) = Σ a_i t^i (ascending) with n >= deg p arguments. Notes §6.11.
+
+    p[u] = Σ_i a_i e_i(u) / C(n, i), with e_i the elementary symmetric
+    polynomials: symmetric, affine in each u_j, and p[t, ..., t] = p(t).
+    coeffs: (m+1,) -> float, or (m+1, d) -> (d,).
+    """
+    a = as_float_array(coeffs, "coeffs")
+    if a.ndim not in (1, 2) or len(a) == 0:
+        raise ValueError(f"coeffs: expected shape (m+1,) or (m+1, d), got {a.shape}")
+    u = as_float_array(args, "args")
+    if u.ndim != 1 or len(u) < len(a) - 1:
+        raise ValueError(f"args: a degree-{len(a) - 1} polynomial needs at least {len(a) - 1} arguments, got shape {u.shape}")
+    n = len(u)
+    e = _elementary_symmetric(u)[: len(a)]
+    weights = e / np.array([comb(n, i) for i in range(len(a))], dtype=float)
+    value = weights @ a
+    return float(value) if a.ndim == 1 else value
+
+
+# --- basis functions, Greville abscissae, explicit B-splines ---------------------------
+
+
+def bspline_basis(knots, degree: int, i: int, t):
+    """Values of the i-th basis function B_i^n: the explicit B-spline with coefficient 1 at i, 0 elsewhere. Notes §6.14.
+
+    knots: (c+n-1,); 0 <= i < c. t in the domain: a number -> float, k numbers -> (k,).
+    """
+    kn, n = _knots_of_degree(knots, degree)
+    c = len(kn) - n + 1
+    i = as_count(i, "i")
+    if i >= c:
+        raise ValueError(f"i: expected 0 <= i < {c} (one basis function per control point), got {i}")
+    coefficients = np.zeros((c, 1))
+    coefficients[i] = 1.0
+    ts, scalar = as_parameter(t)
+    values = de_boor(coefficients, kn, ts)[:, 0]
+    return float(values[0]) if scalar else values
+
+
+def _ratio(numerator: np.ndarray, denominator: np.ndarray) -> np.ndarray:
+    """numerator / denominator, with 0 where the denominator is 0 (the recurrence's 0/0 = 0 rule)."""
+    safe = np.where(denominator == 0, 1.0, denominator)
+    return np.where(denominator == 0, 0.0, numerator / safe)
+
+
+def basis_matrix(knots, degree: int, t) -> np.ndarray:
+    """All c basis functions at k parameters by the Cox-de Boor recurrence: (k, c), rows sum to 1. Notes §6.14.3.
+
+    B_m^p = ω_m^p B_m^(p-1) + (1 - ω_(m+1)^p) B_(m+1)^(p-1) with
+    ω_m^p(t) = (t - u_m) / (u_(m+p) - u_m), or 0 where u_(m+p) = u_m, on the
+    knots padded with one copy of each end knot (the c + n + 1 convention).
+    """
+    kn, n = _knots_of_degree(knots, degree)
+    ts, _ = as_parameter(t)
+    _in_domain(ts, kn, n)
+    padded = np.concatenate([kn[:1], kn, kn[-1:]])
+    # Degree 0: one 1 per row, in the span that contains t (which handles the right end).
+    basis = np.zeros((len(ts), len(padded) - 1))
+    basis[np.arange(len(ts)), _spans(kn, n, ts) + 1] = 1.0
+    tt = ts[:, None]
+    for p in range(1, n + 1):
+        count = len(padded) - p
+        omega = _ratio(tt - padded[:count], padded[p : p + count] - padded[:count])
+        basis = omega[:, :-1] * basis[:, :-1] + (1 - omega[:, 1:]) * basis[:, 1:]
+    return basis
+
+
+def greville(knots, degree: int) -> np.ndarray:
+    """Greville abscissae (t_i + ... + t_(i+n-1)) / n, one per control point: shape (c,). Notes §6.9."""
+    kn, n = _knots_of_degree(knots, degree)
+    sums = np.convolve(kn, np.ones(n), mode="valid")
+    return sums / n
+
+
+def explicit_bspline(coeffs, knots) -> np.ndarray:
+    """Planar control points (greville_i, coeffs_i) of the explicit B-spline y = Σ coeffs_i B_i(t): (c, 2). Notes §6.9.
+
+    Because the Greville abscissae reproduce x = t, the curve's x-coordinate is the parameter.
+    """
+    y = as_float_array(coeffs, "coeffs")
+    if y.ndim != 1:
+        raise ValueError(f"coeffs: expected a 1-D array of c coefficients, got shape {y.shape}")
+    pts, kn, n = _spline(y[:, None], knots)
+    return np.column_stack([greville(kn, n), pts[:, 0]])
+
+
+# --- conversions and bookkeeping -------------------------------------------------------
+
+
+def to_scipy(points, knots) -> tuple[np.ndarray, np.ndarray, int]:
+    """(t, c, k) for scipy.interpolate.BSpline: c + n + 1 knots. Notes §6.2.
+
+    The usual convention has one more knot at each end, which never affects the
+    curve on its domain; we repeat the first and last knot.
+    """
+    pts, kn, n = _spline(points, knots)
+    return np.concatenate([kn[:1], kn, kn[-1:]]), pts, n
+
+
+def from_scipy(t, c, k) -> tuple[np.ndarray, np.ndarray]:
+    """(points (c, d), knots (c+n-1,)) from a SciPy-style (t, c, k): drop the first and last knot. Notes §6.2.
+
+    c may be (c,) for a scalar spline; it becomes (c, 1).
+    """
+    coefficients = as_float_array(c, "c")
+    if coefficients.ndim == 1:
+        coefficients = coefficients[:, None]
+    pts = as_points(coefficients, "c")
+    kn = _as_knots(t, "t")
+    k = as_count(k, "k", minimum=1)
+    if len(kn) != len(pts) + k + 1:
+        raise ValueError(f"t: expected len(c) + k + 1 = {len(pts) + k + 1} knots, got {len(kn)}")
+    inner = kn[1:-1]
+    _check_knots(inner, k, "t")
+    return pts, inner
+
+
+def degree(points, knots) -> int:
+    """The degree len(knots) - len(points) + 1 of a B-spline, after checking it. Notes §6.4.1."""
+    return _spline(points, knots)[2]
+
+
+def knot_multiplicities(knots) -> tuple[np.ndarray, np.ndarray]:
+    """Distinct knot values and how often each occurs: ((m,), (m,) ints). Notes §6.4."""
+    values, counts = np.unique(_as_knots(knots), return_counts=True)
+    return values, counts
+
+
+def continuity_at_knots(knots, degree: int) -> tuple[np.ndarray, np.ndarray]:
+    """The order of continuity C^(n-m) at each distinct knot strictly inside the domain. Notes §6.4.
+
+    Returns (values (m,), orders (m,) ints); a knot of multiplicity m is C^(n-m).
+    """
+    kn, n = _knots_of_degree(knots, degree)
+    a, b = domain(kn, n)
+    values, counts = np.unique(kn, return_counts=True)
+    inside = (values > a) & (values < b)
+    return values[inside], n - counts[inside]
+
+
+# --- derivatives and degree elevation --------------------------------------------------
+
+
+def hodograph(points, knots) -> tuple[np.ndarray, np.ndarray]:
+    """The derivative curve as a degree n-1 B-spline: (points (c-1, d), knots (c+n-3,)). Notes §6.10, (6.2).
+
+    Q_i = n (P_(i+1) - P_i) / (t_(i+n) - t_i) over the knots with the first and
+    last removed. Needs degree n >= 2 and no knot of multiplicity n in the
+    domain (the derivative jumps there); `derivative` handles both cases.
+    """
+    pts, kn, n = _spline(points, knots)
+    if n < 2:
+        raise ValueError("knots: the hodograph of a degree-1 B-spline has degree 0; use derivative() instead")
+    inner = kn[1:-1]
+    values, counts = np.unique(inner, return_counts=True)
+    if np.any(counts > n - 1):
+        raise ValueError(
+            f"knots: the derivative jumps at the knot {values[counts > n - 1][0]} of multiplicity {n}, "
+            "so it is no continuous degree n-1 B-spline; use derivative() instead"
+        )
+    i = np.arange(len(pts) - 1)
+    scale = n / (kn[i + n] - kn[i])
+    return scale[:, None] * np.diff(pts, axis=0), inner
+
+
+def _local_hodograph(local_points: np.ndarray, local_knots: np.ndarray):
+    """Hodograph of each gathered segment: (k, n+1, d), (k, 2n) -> (k, n, d), (k, 2n-2).
+
+    Within a segment every denominator t_(i+n) - t_i spans the segment's own
+    knot span, so it is positive whatever the multiplicities.
+    """
+    n = local_points.shape[1] - 1
+    spread = local_knots[:, n:] - local_knots[:, :n]
+    return n / spread[..., None] * np.diff(local_points, axis=1), local_knots[:, 1:-1]
+
+
+def derivative(points, knots, t, order: int = 1) -> np.ndarray:
+    """The order-th derivative vector(s) of a B-spline curve: (d,) or (k, d). Notes §6.10.
+
+    Each t's segment is gathered as in `de_boor`, differentiated `order` times
+    by the hodograph rule (6.2) applied to its n+1 points, and evaluated.
+    At a knot the right-hand derivative is returned (left-hand at the domain's end).
+    """
+    pts, kn, n = _spline(points, knots)
+    order = as_count(order, "order")
+    ts, scalar = as_parameter(t)
+    _in_domain(ts, kn, n)
+    if order > n:
+        result = np.zeros((len(ts), pts.shape[1]))
+    else:
+        local_points, local_knots = _gather(pts, kn, n, _spans(kn, n, ts))
+        for _ in range(order):
+            local_points, local_knots = _local_hodograph(local_points, local_knots)
+        values = np.repeat(ts[:, None], n - order, axis=1)
+        result = _triangle(local_points, local_knots, values)[-1][:, 0]
+    return result[0] if scalar else result
+
+
+def elevate(points, knots) -> tuple[np.ndarray, np.ndarray]:
+    """Raise the degree by one, same curve: every knot value in the domain gains one multiplicity. Notes §6.13.5.
+
+    The new control point with label (u_0, ..., u_n) is the degree n+1 polar
+    value F(u_0..u_n), the mean of the n+1 old polar values f(u without u_j).
+    Returns (points (c', d), knots) with c' = c + (number of distinct knots in the domain).
+    """
+    pts, kn, n = _spline(points, knots)
+    a, b = kn[n - 1], kn[len(kn) - n]
+    values = np.unique(kn)
+    new_knots = np.sort(np.concatenate([kn, values[(values >= a) & (values <= b)]]))
+    labels = new_knots[np.arange(len(new_knots) - n)[:, None] + np.arange(n + 1)]
+    return elevated_polar_values(pts, kn, labels), new_knots
+
+
+# --- special knot vectors and curves ---------------------------------------------------
+
+
+def bezier_end_knots(count: int, degree: int, start: float = 0.0, end: float | None = None) -> np.ndarray:
+    """Knots with n-fold end knots (Bézier end conditions) and uniform interior: (count+n-1,). Notes §6.6.
+
+    count control points give count - n segments of equal length over
+    [start, end]; `end` defaults to start + count - n (unit spacing). The curve
+    then starts at the first control point and ends at the last, tangent to the polygon.
+    """
+    n = as_count(degree, "degree", minimum=1)
+    c = as_count(count, "count", minimum=n + 1)
+    a = as_scalar(start, "start")
+    b = a + (c - n) if end is None else as_scalar(end, "end")
+    if not a < b:
+        raise ValueError(f"end: expected end > start = {a}, got {b}")
+    breaks = np.linspace(a, b, c - n + 1)
+    return np.concatenate([np.full(n - 1, a), breaks, np.full(n - 1, b)])
+
+
+def periodic_closed(points, degree: int) -> tuple[np.ndarray, np.ndarray]:
+    """A closed periodic uniform B-spline through the polygon's points repeated: (c+n, d), knots 0, 1, ... Notes §6.5.
+
+    The first n points are appended again, so the last n segments wrap around
+    and the curve closes with C^(n-1) continuity; the domain is [n-1, n-1+c].
+    """
+    pts = as_points(points)
+    n = as_count(degree, "degree", minimum=1)
+    if len(pts) < n:
+        raise ValueError(f"points: a closed degree-{n} B-spline needs at least {n} points, got {len(pts)}")
+    wrapped = np.concatenate([pts, pts[:n]])
+    return wrapped, np.arange(len(wrapped) + n - 1, dtype=float)
+
+
+def circle_approximation(count: int) -> tuple[np.ndarray, np.ndarray, float]:
+    """The periodic uniform cubic whose `count` control points on a regular polygon best approximate the unit circle. Notes §6.14.4.
+
+    With control points at radius R and angle step θ = 2π/count, the curve's
+    radius is largest at the knots, R (2 + cos θ)/3, and smallest midway,
+    R (23 cos(θ/2) + cos(3θ/2))/24. Choosing R so that these straddle 1
+    symmetrically minimises the worst radial error, which is returned.
+    Returns (points (count+3, 2), knots, error) in the form of `periodic_closed`.
+    """
+    c = as_count(count, "count", minimum=3)
+    theta = 2 * np.pi / c
+    at_knot = (2 + np.cos(theta)) / 3
+    midway = (23 * np.cos(theta / 2) + np.cos(3 * theta / 2)) / 24
+    radius = 2 / (at_knot + midway)
+    angles = theta * np.arange(c)
+    polygon = radius * np.column_stack([np.cos(angles), np.sin(angles)])
+    points, knots = periodic_closed(polygon, 3)
+    return points, knots, float(radius * at_knot - 1)
+
+
+# --- combining Bézier curves ------------------------------------------------------------
+
+
+def _as_segments(segments, intervals) -> tuple[np.ndarray, np.ndarray]:
+    segs = as_float_array(segments, "segments")
+    if segs.ndim != 3 or segs.shape[1] < 2:
+        raise ValueError(f"segments: expected shape (s, n+1, d) with degree n >= 1, got {segs.shape}")
+    spans = as_float_array(intervals, "intervals")
+    if spans.shape != (len(segs), 2):
+        raise ValueError(f"intervals: expected shape ({len(segs)}, 2), one [a, b] per segment, got {spans.shape}")
+    if np.any(spans[:, 1] <= spans[:, 0]):
+        raise ValueError(f"intervals: each interval needs a < b, got {spans.tolist()}")
+    if np.any(spans[1:, 0] != spans[:-1, 1]):
+        raise ValueError(f"intervals: each interval must start where the previous one ends, got {spans.tolist()}")
+    return segs, spans
+
+
+def _joint_continuity(left: np.ndarray, right: np.ndarray, left_span, right_span, tol: float) -> int:
+    """Highest order r <= n-1 such that derivatives 0..r agree at the joint, or -1 if the ends differ."""
+    n = len(left) - 1
+    order = -1
+    for r in range(n):
+        end, start = left[-1], right[0]
+        if np.linalg.norm(end - start) > tol * (1 + max(np.linalg.norm(end), np.linalg.norm(start))):
+            break
+        order = r
+        left, right = bezier_hodograph(left, left_span), bezier_hodograph(right, right_span)
+    return order
+
+
+def combine_bezier(segments, intervals, tol: float = 1e-9) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """One B-spline from consecutive Bézier curves, with a knot of multiplicity n - r at a C^r joint. Notes §6.12.
+
+    segments: (s, n+1, d), segment j defined over intervals[j] = (a_j, b_j) with
+    b_j = a_(j+1). At each joint the continuity r (0 ... n-1) is detected by
+    comparing derivatives within `tol` (relative); knots the smoothness makes
+    redundant are left out and the control points are read off as polar
+    values. Ends get n-fold knots (Bézier end conditions).
+    Returns (points, knots, continuity (s-1,) ints). Raises if a joint is not even C0.
+    """
+    segs, spans = _as_segments(segments, intervals)
+    tol = as_scalar(tol, "tol")
+    n = segs.shape[1] - 1
+    orders = np.array(
+        [_joint_continuity(segs[j], segs[j + 1], spans[j], spans[j + 1], tol) for j in range(len(segs) - 1)],
+        dtype=int,
+    )
+    if np.any(orders < 0):
+        joint = int(np.argmax(orders < 0))
+        raise ValueError(f"segments: segment {joint} ends at {segs[joint, -1].tolist()} but the next starts at "
+                         f"{segs[joint + 1, 0].tolist()}, so they do not join")
+    joints = spans[1:, 0]
+    knots = np.concatenate([np.full(n, spans[0, 0]), np.repeat(joints, n - orders), np.full(n, spans[-1, 1])])
+    labels = knots[np.arange(len(knots) - n + 1)[:, None] + np.arange(n)]
+    # The segment of a label: the first one whose interval reaches past the label's smallest knot.
+    owner = np.minimum(np.searchsorted(spans[:, 1], labels.min(axis=1), side="right"), len(segs) - 1)
+    # A Bézier curve over [a, b] is the B-spline with knots (a, ..., a, b, ..., b): one triangle for all labels.
+    local_knots = np.repeat(spans[owner], n, axis=1)
+    points = _triangle(segs[owner], local_knots, labels)[-1][:, 0]
+    return points, knots, orders
