@@ -1,0 +1,238 @@
+"""Blending functions, their properties, and the classic cubic forms: chapter 5 of the notes.
+
+A curve P(t) = Σ f_i(t) P_i is fixed by its blending functions f_i. Here a set
+of blending functions (a "basis" in the loose sense) is any callable that maps
+a 1-D array of k parameters to their values, shape (k, n+1). The module gives
+the sets the notes discuss (cubic Bézier, Timmer's parametric cubic, Ball's
+cubic, the Overhauser / Catmull-Rom segment and the notes' rational example),
+evaluates curves from them and converts the cubic forms to Bézier control
+points; `cagd_ref.blending_properties` tests a set for the six properties of
+the chapter.
+
+Every cubic form is stored once, as a 4x4 table of power coefficients
+(row j holds the coefficients of t^j, column i is f_i); evaluation and the
+conversion to Bézier form are both derived from that table.
+"""
+
+from __future__ import annotations
+
+from typing import Callable
+
+import numpy as np
+
+from ._validation import as_count, as_float_array, as_parameter, as_points
+from .bezier import bernstein_matrix
+from .polynomials import horner, power_to_bernstein
+
+__all__ = [
+    "Basis",
+    "POWER_COEFFICIENTS",
+    "basis_values",
+    "FORMS",
+    "bezier_basis",
+    "timmer_basis",
+    "ball_basis",
+    "overhauser_basis",
+    "rational_example_basis",
+    "blend",
+    "overhauser_point",
+    "conversion_matrix",
+    "to_bezier",
+    "from_bezier",
+    "timmer_to_bezier",
+    "ball_to_bezier",
+    "overhauser_to_bezier",
+]
+
+Basis = Callable[[np.ndarray], np.ndarray]
+
+# Power coefficients of each cubic form: row j multiplies t**j, column i is the blending function f_i.
+POWER_COEFFICIENTS: dict[str, np.ndarray] = {
+    # f0 = (1-t)²(1-2t), f1 = 4t(1-t)², f2 = 4t²(1-t), f3 = t²(2t-1)
+    "timmer": np.array([[1, 0, 0, 0], [-4, 4, 0, 0], [5, -8, 4, -1], [-2, 4, -4, 2]], dtype=float),
+    # f0 = (1-t)², f1 = 2t(1-t)², f2 = 2t²(1-t), f3 = t²
+    "ball": np.array([[1, 0, 0, 0], [-2, 2, 0, 0], [1, -4, 2, 1], [0, 2, -2, 0]], dtype=float),
+    # f0 = -t(1-t)²/2, f1 = (2 - 5t² + 3t³)/2, f2 = (t + 4t² - 3t³)/2, f3 = -t²(1-t)/2
+    "overhauser": 0.5 * np.array([[0, 2, 0, 0], [-1, 0, 1, 0], [2, -5, 4, -1], [-1, 3, -3, 1]], dtype=float),
+}
+
+# ---------------------------------------------------------------- blending functions
+
+
+def _cubic_basis(form: str, t):
+    """Values of the four blending functions of a cubic form: (4,) for a number t, (k, 4) for k values."""
+    return horner(POWER_COEFFICIENTS[form], t)
+
+
+def bezier_basis(t, degree: int = 3) -> np.ndarray:
+    """The Bernstein polynomials B_0^n..B_n^n at t: (n+1,) for a number, (k, n+1) for k values. Notes §2.1, §5.
+
+    The reference set the other blending functions of the chapter are compared with.
+    """
+    ts, scalar = as_parameter(t)
+    values = bernstein_matrix(as_count(degree, "degree"), ts)
+    return values[0] if scalar else values
+
+
+def timmer_basis(t) -> np.ndarray:
+    """Timmer's parametric cubic blending functions at t: (4,) for a number, (k, 4) for k values. Notes §5.1.
+
+    f0 = (1-t)²(1-2t), f1 = 4t(1-t)², f2 = 4t²(1-t), f3 = t²(2t-1). At t = 1/2
+    the values are (0, 1/2, 1/2, 0): the curve passes through the midpoint of P1 P2.
+    """
+    return _cubic_basis("timmer", t)
+
+
+def ball_basis(t) -> np.ndarray:
+    """Ball's cubic blending functions at t: (4,) for a number, (k, 4) for k values. Notes §5.2.
+
+    f0 = (1-t)², f1 = 2t(1-t)², f2 = 2t²(1-t), f3 = t²; all four are
+    non-negative on [0, 1] and sum to one.
+    """
+    return _cubic_basis("ball", t)
+
+
+def overhauser_basis(t) -> np.ndarray:
+    """Blending functions of one Overhauser (uniform Catmull-Rom) segment: (4,) or (k, 4). Notes §5.3.
+
+    f0 = -t(1-t)²/2, f1 = (2 - 5t² + 3t³)/2, f2 = (t + 4t² - 3t³)/2,
+    f3 = -t²(1-t)/2. The segment runs from P1 (t = 0) to P2 (t = 1) with
+    end tangents (P2 - P0)/2 and (P3 - P1)/2.
+    """
+    return _cubic_basis("overhauser", t)
+
+
+def rational_example_basis(t) -> np.ndarray:
+    """The notes' rational example ((1-t)², 2t(1-t), 2t²) / (1+t²): (3,) or (k, 3). Notes §5, Example.
+
+    The denominator 1 + t² never vanishes, so every real t is allowed.
+    """
+    ts, scalar = as_parameter(t)
+    numerators = np.column_stack([(1 - ts) ** 2, 2 * ts * (1 - ts), 2 * ts**2])
+    values = numerators / (1 + ts**2)[:, None]
+    return values[0] if scalar else values
+
+
+FORMS: dict[str, Basis] = {
+    "bezier": bezier_basis,
+    "timmer": timmer_basis,
+    "ball": ball_basis,
+    "overhauser": overhauser_basis,
+}
+
+
+def basis_values(basis, ts: np.ndarray) -> np.ndarray:
+    """Call a blending-function set on the 1-D parameters ts and check it answers with shape (k, n+1)."""
+    if not callable(basis):
+        raise TypeError(f"basis: expected a function t -> values of shape (k, n+1), got {type(basis).__name__}")
+    values = as_float_array(basis(ts), "basis")
+    if values.ndim != 2 or values.shape[0] != len(ts) or values.shape[1] == 0:
+        raise ValueError(
+            f"basis: expected values of shape ({len(ts)}, n+1) for {len(ts)} parameters, got shape {values.shape}"
+        )
+    return values
+
+
+def blend(basis: Basis, points, t) -> np.ndarray:
+    """The curve Σ f_i(t) P_i of a blending-function set: (d,) for a number t, (k, d) for k values. Notes §5.
+
+    basis: a callable, 1-D array of k parameters -> values (k, n+1), such as
+    `timmer_basis`; points: (n+1, d).
+    """
+    pts = as_points(points)
+    ts, scalar = as_parameter(t)
+    values = basis_values(basis, ts)
+    if values.shape[1] != len(pts):
+        raise ValueError(f"points: the basis has {values.shape[1]} functions but {len(pts)} points were given")
+    curve = values @ pts
+    return curve[0] if scalar else curve
+
+
+def overhauser_point(points, t) -> np.ndarray:
+    """Point(s) of the Overhauser (Catmull-Rom) curve through points[1..c-2]: (d,) or (k, d). Notes §5.3.
+
+    points: (c, d) with c >= 4. One global parameter t in [0, c-3]: segment
+    j = 0..c-4 covers [j, j+1], is built from points j..j+3 and runs from
+    points[j+1] to points[j+2], so P(j) = points[j+1]. At an integer t the two
+    neighbouring segments agree (the curve is C1 there).
+    """
+    pts = as_points(points, min_count=4)
+    ts, scalar = as_parameter(t)
+    last = len(pts) - 3
+    if np.any((ts < 0) | (ts > last)):
+        raise ValueError(f"t: expected values in [0, {last}] for {len(pts)} points, got {ts[(ts < 0) | (ts > last)][:3].tolist()}")
+    # t = c-3 belongs to the last segment, not to a segment c-3 that does not exist.
+    segment = np.minimum(np.floor(ts), last - 1).astype(int)
+    local = overhauser_basis(ts - segment)
+    window = pts[segment[:, None] + np.arange(4)]  # (k, 4, d): the four points of each t's segment
+    curve = np.einsum("ki,kid->kd", local, window)
+    return curve[0] if scalar else curve
+
+
+# ---------------------------------------------------------------- conversions to Bézier form
+
+
+def conversion_matrix(form: str) -> np.ndarray:
+    """The (4, 4) matrix M with Bézier control points = M @ the control points of `form`. Notes §5.1-§5.3.
+
+    Column i holds the Bernstein coefficients of the form's f_i: if
+    f_i = Σ_j m_ji B_j^3, then Σ_i f_i Q_i = Σ_j B_j^3 (Σ_i m_ji Q_i).
+    form: "bezier" (the identity), "timmer", "ball" or "overhauser".
+    """
+    if not isinstance(form, str) or form not in FORMS:
+        raise ValueError(f"form: expected one of {sorted(FORMS)}, got {form!r}")
+    if form == "bezier":
+        return np.eye(4)
+    return power_to_bernstein(POWER_COEFFICIENTS[form])
+
+
+def _four_points(points, form: str) -> np.ndarray:
+    pts = as_points(points)
+    if len(pts) != 4:
+        raise ValueError(f"points: the {form} form of a cubic has exactly 4 control points, expected shape (4, d), got {pts.shape}")
+    return pts
+
+
+def to_bezier(form: str, points) -> np.ndarray:
+    """The 4 Bézier control points (4, d) of the cubic of `form` with control points (4, d). Notes §5.1-§5.3.
+
+    form: "bezier", "timmer", "ball" or "overhauser" (one segment). Both
+    curves are the same polynomial, so they agree at every t.
+    """
+    matrix = conversion_matrix(form)
+    return matrix @ _four_points(points, form)
+
+
+def from_bezier(form: str, points) -> np.ndarray:
+    """The inverse of `to_bezier`: control points (4, d) of `form` for a Bézier cubic (4, d). Notes §5.1-§5.3."""
+    matrix = conversion_matrix(form)
+    return np.linalg.solve(matrix, _four_points(points, form))
+
+
+def timmer_to_bezier(points) -> np.ndarray:
+    """Bézier control points (4, d) of Timmer's cubic with control points Q (4, d). Notes §5.1, Example.
+
+    Matching the ends and the end derivatives Q'(0) = 4(Q1 - Q0), Q'(1) = 4(Q3 - Q2)
+    gives P0 = Q0, P1 = (4 Q1 - Q0)/3, P2 = (4 Q2 - Q3)/3, P3 = Q3.
+    """
+    return to_bezier("timmer", points)
+
+
+def ball_to_bezier(points) -> np.ndarray:
+    """Bézier control points (4, d) of Ball's cubic with control points Q (4, d). Notes §5.2.
+
+    P0 = Q0, P1 = (Q0 + 2 Q1)/3, P2 = (2 Q2 + Q3)/3, P3 = Q3: each Bézier point
+    is a convex combination of neighbouring Ball points.
+    """
+    return to_bezier("ball", points)
+
+
+def overhauser_to_bezier(points) -> np.ndarray:
+    """Each segment of an Overhauser curve through points (c, d) as a Bézier cubic: (c-3, 4, d). Notes §5.3.
+
+    Segment j has P_j+1, P_j+1 + (P_j+2 - P_j)/6, P_j+2 - (P_j+3 - P_j+1)/6, P_j+2
+    and covers the global parameters [j, j+1] of `overhauser_point`.
+    """
+    pts = as_points(points, min_count=4)
+    windows = pts[np.arange(len(pts) - 3)[:, None] + np.arange(4)]  # (c-3, 4, d): each segment's four points
+    return np.einsum("ij,sjd->sid", conversion_matrix("overhauser"), windows)

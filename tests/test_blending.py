@@ -1,0 +1,447 @@
+"""Unit tests of cagd_ref.blending: blending functions, the cubic forms and their properties (chapter 5)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+import sympy as sp
+from numpy.polynomial import Polynomial
+from scipy.interpolate import BPoly, CubicHermiteSpline
+from scipy.spatial import ConvexHull
+
+from cagd_ref import blending as bl
+from cagd_ref import blending_properties as bp
+from cagd_ref.bezier import bernstein, de_casteljau, evaluate, hodograph
+
+T = np.linspace(0, 1, 41)
+CUBIC = np.array([[0.0, 0.0], [1.0, 2.0], [3.0, 2.5], [4.0, 0.5]])
+
+# Each set of the chapter with the properties the notes (and the mathematics) give it.
+EXPECTED = {
+    "bezier": dict(coordinate_independence=True, convex_hull=True, symmetry=True, variation_diminishing=True,
+                   linear_independence=True, endpoint_interpolation=True),
+    "timmer": dict(coordinate_independence=True, convex_hull=False, symmetry=True, variation_diminishing=False,
+                   linear_independence=True, endpoint_interpolation=True),
+    "ball": dict(coordinate_independence=True, convex_hull=True, symmetry=True, variation_diminishing=True,
+                 linear_independence=True, endpoint_interpolation=True),
+    "overhauser": dict(coordinate_independence=True, convex_hull=False, symmetry=True, variation_diminishing=False,
+                       linear_independence=True, endpoint_interpolation=False),
+    "rational_example": dict(coordinate_independence=True, convex_hull=True, symmetry=False, variation_diminishing=True,
+                             linear_independence=True, endpoint_interpolation=True),
+}
+NUMERIC = {**bl.FORMS, "rational_example": bl.rational_example_basis}
+
+
+def random_points(seed: int, count: int = 4, dim: int = 2) -> np.ndarray:
+    return np.random.default_rng(seed).uniform(-5, 5, size=(count, dim))
+
+
+def test_every_public_name_is_tested():
+    tested = {
+        "Verdict", "PROPERTIES", "FORMS", "bezier_basis", "timmer_basis", "ball_basis", "overhauser_basis",
+        "rational_example_basis", "blend", "overhauser_point", "conversion_matrix", "to_bezier", "from_bezier", "timmer_to_bezier",
+        "ball_to_bezier", "overhauser_to_bezier", "line_crossings", "convex_hull", "distance_outside_hull",
+        "check_properties", "symbolic_basis", "symbolic_properties", "Basis", "POWER_COEFFICIENTS", "basis_values",
+    }
+    assert set(bl.__all__) | set(bp.__all__) == tested
+
+
+# --- the blending functions (Notes §5.1-§5.3) --------------------------------------------
+
+
+def test_timmer_basis_is_the_notes_formula_and_its_derivative():
+    values = bl.timmer_basis(T)
+    factored = np.column_stack([(1 - T) ** 2 * (1 - 2 * T), 4 * T * (1 - T) ** 2, 4 * T**2 * (1 - T), T**2 * (2 * T - 1)])
+    np.testing.assert_allclose(values, factored, atol=1e-14)
+    # The notes differentiate the basis: Q'(t) = (-6t²+10t-4) Q0 + (12t²-16t+4) Q1 + (-12t²+8t) Q2 + (6t²-2t) Q3.
+    notes_derivative = [[-4, 10, -6], [4, -16, 12], [0, 8, -12], [0, -2, 6]]
+    for i, coefficients in enumerate(notes_derivative):
+        fitted = Polynomial.fit(T, values[:, i], 3).convert()
+        np.testing.assert_allclose(fitted.deriv().coef, coefficients, atol=1e-9)
+
+
+def test_timmer_passes_through_the_midpoint_of_the_middle_leg():
+    np.testing.assert_allclose(bl.timmer_basis(0.5), [0, 0.5, 0.5, 0], atol=1e-15)
+    np.testing.assert_allclose(bl.blend(bl.timmer_basis, CUBIC, 0.5), (CUBIC[1] + CUBIC[2]) / 2)
+
+
+def test_ball_basis_is_the_notes_formula():
+    factored = np.column_stack([(1 - T) ** 2, 2 * T * (1 - T) ** 2, 2 * T**2 * (1 - T), T**2])
+    np.testing.assert_allclose(bl.ball_basis(T), factored, atol=1e-14)
+    np.testing.assert_allclose(bl.ball_basis(0.5), [0.25] * 4)
+
+
+def test_ball_with_equal_middle_points_is_the_quadratic_bezier_curve():
+    # The notes: P1 = P2 turns Ball's cubic into the quadratic with control points P0, P1, P3.
+    p = np.array([[0.0, 0.0], [2.0, 3.0], [2.0, 3.0], [5.0, 1.0]])
+    np.testing.assert_allclose(bl.blend(bl.ball_basis, p, T), de_casteljau(p[[0, 1, 3]], T), atol=1e-13)
+
+
+def test_overhauser_basis_is_the_uniform_catmull_rom_segment():
+    factored = 0.5 * np.column_stack([-T * (1 - T) ** 2, 2 - 5 * T**2 + 3 * T**3, T + 4 * T**2 - 3 * T**3, -(T**2) * (1 - T)])
+    np.testing.assert_allclose(bl.overhauser_basis(T), factored, atol=1e-14)
+    np.testing.assert_allclose(bl.overhauser_basis(np.array([0.0, 1.0])), [[0, 1, 0, 0], [0, 0, 1, 0]], atol=1e-15)
+
+
+def test_overhauser_blends_two_parabolas():
+    # Overhauser's construction: the parabola through P0, P1, P2 (at -1, 0, 1) and the one through
+    # P1, P2, P3 (at 0, 1, 2), blended linearly over the middle span, is the Catmull-Rom segment.
+    p = random_points(3)
+    left = np.polynomial.polynomial.polyfit([-1, 0, 1], p[:3], 2)
+    right = np.polynomial.polynomial.polyfit([0, 1, 2], p[1:], 2)
+    blended = (1 - T)[:, None] * np.polynomial.polynomial.polyval(T, left).T + T[:, None] * np.polynomial.polynomial.polyval(T, right).T
+    np.testing.assert_allclose(bl.blend(bl.overhauser_basis, p, T), blended, atol=1e-12)
+
+
+@pytest.mark.parametrize("degree", [0, 1, 3, 6])
+def test_bezier_basis_is_the_bernstein_polynomials(degree):
+    values = bl.bezier_basis(T, degree)
+    assert values.shape == (len(T), degree + 1)
+    for i in range(degree + 1):
+        np.testing.assert_allclose(values[:, i], bernstein(i, degree, T))
+    assert bl.bezier_basis(0.25).shape == (4,)
+
+
+def test_rational_example_is_a_rational_quadratic_with_weights_1_1_2():
+    values = bl.rational_example_basis(T)
+    expected = np.column_stack([T**2 - 2 * T + 1, 2 * T - 2 * T**2, 2 * T**2]) / (T**2 + 1)[:, None]
+    np.testing.assert_allclose(values, expected, atol=1e-15)
+    p = random_points(7, 3)
+    np.testing.assert_allclose(bl.blend(bl.rational_example_basis, p, T), evaluate(p, T, weights=[1, 1, 2]), atol=1e-12)
+    # Defined for every real t; the notes' factorisations make the signs visible.
+    wide = np.linspace(-3, 3, 13)
+    np.testing.assert_allclose(bl.rational_example_basis(wide)[:, 0], (wide - 1) ** 2 / (wide**2 + 1))
+
+
+def test_rational_example_linear_independence_system_of_the_notes():
+    # c0 (t²-2t+1) + c1 (2t-2t²) + c2 (2t²) ≡ 0 gives c0 - 2c1 + 2c2 = 0, -2c0 + 2c1 = 0, c0 = 0.
+    system = np.array([[1, -2, 2], [-2, 2, 0], [1, 0, 0]], dtype=float)
+    assert np.linalg.matrix_rank(system) == 3
+    numerators = bl.rational_example_basis(T) * (1 + T**2)[:, None]
+    for column, row in zip(numerators.T, system.T):
+        np.testing.assert_allclose(Polynomial.fit(T, column, 2).convert().coef, row[::-1], atol=1e-9)
+
+
+@pytest.mark.parametrize("name", ["timmer", "ball", "overhauser"])
+def test_scalar_and_array_shapes(name):
+    basis = bl.FORMS[name]
+    assert basis(0.3).shape == (4,)
+    assert basis([0.3]).shape == (1, 4)
+    assert basis(np.array([], dtype=float)).shape == (0, 4)
+    np.testing.assert_allclose(basis(0.3), basis([0.2, 0.3])[1])
+
+
+# --- blend and the Overhauser curve -------------------------------------------------------
+
+
+def test_blend_shapes_and_dimensions():
+    p = random_points(1, 4, 3)
+    assert bl.blend(bl.timmer_basis, p, 0.2).shape == (3,)
+    assert bl.blend(bl.timmer_basis, p, T).shape == (len(T), 3)
+    np.testing.assert_allclose(bl.blend(bl.bezier_basis, p, T), de_casteljau(p, T), atol=1e-13)
+
+
+def test_overhauser_curve_interpolates_and_matches_a_hermite_spline():
+    p = random_points(11, 7)
+    t = np.linspace(0, 4, 81)
+    curve = bl.overhauser_point(p, t)
+    assert curve.shape == (81, 2)
+    np.testing.assert_allclose(bl.overhauser_point(p, np.arange(5.0)), p[1:6], atol=1e-13)
+    # Peer: SciPy's cubic Hermite spline through P1..P5 with the Catmull-Rom tangents (P_i+1 - P_i-1)/2.
+    tangents = (p[2:] - p[:-2]) / 2
+    peer = CubicHermiteSpline(np.arange(5.0), p[1:6], tangents)
+    np.testing.assert_allclose(curve, peer(t), atol=1e-12)
+    assert bl.overhauser_point(p, 2.5).shape == (2,)
+
+
+def test_overhauser_end_tangents_and_continuity():
+    p = random_points(5, 6)
+    segments = bl.overhauser_to_bezier(p)
+    assert segments.shape == (3, 4, 2)
+    for j, segment in enumerate(segments):
+        velocity = hodograph(segment)
+        # The notes: P'(0) = (P2 - P0)/2 and P'(1) = (P3 - P1)/2 for each segment's four points.
+        np.testing.assert_allclose(de_casteljau(velocity, 0.0), (p[j + 2] - p[j]) / 2)
+        np.testing.assert_allclose(de_casteljau(velocity, 1.0), (p[j + 3] - p[j + 1]) / 2)
+    # C1 at the joints (same point and velocity), but in general not C2.
+    for first, second in zip(segments, segments[1:]):
+        np.testing.assert_allclose(first[-1], second[0])
+        np.testing.assert_allclose(de_casteljau(hodograph(first), 1.0), de_casteljau(hodograph(second), 0.0))
+        jump = de_casteljau(hodograph(hodograph(first)), 1.0) - de_casteljau(hodograph(hodograph(second)), 0.0)
+        assert np.linalg.norm(jump) > 1e-3
+
+
+def test_overhauser_segments_trace_the_global_curve():
+    p = random_points(8, 6, 3)
+    for j, segment in enumerate(bl.overhauser_to_bezier(p)):
+        np.testing.assert_allclose(de_casteljau(segment, T), bl.overhauser_point(p, j + T), atol=1e-12)
+
+
+# --- conversions to Bézier form (Notes §5.1 Example, §5.2, §5.3) -------------------------------
+
+
+@pytest.mark.parametrize("form", ["bezier", "timmer", "ball", "overhauser"])
+@pytest.mark.parametrize("dim", [1, 2, 3])
+def test_each_form_equals_its_bezier_conversion(form, dim):
+    q = random_points(dim, 4, dim)
+    bezier_points = bl.to_bezier(form, q)
+    np.testing.assert_allclose(de_casteljau(bezier_points, T), bl.blend(bl.FORMS[form], q, T), atol=1e-12)
+    np.testing.assert_allclose(bl.from_bezier(form, bezier_points), q, atol=1e-12)
+
+
+def test_timmer_conversion_follows_the_notes_example():
+    q = random_points(21)
+    p = bl.timmer_to_bezier(q)
+    np.testing.assert_allclose(p[[0, 3]], q[[0, 3]])
+    # The notes' end-derivative conditions 3(P1 - P0) = 4(Q1 - Q0) and 3(P3 - P2) = 4(Q3 - Q2) ...
+    np.testing.assert_allclose(3 * (p[1] - p[0]), 4 * (q[1] - q[0]))
+    np.testing.assert_allclose(3 * (p[3] - p[2]), 4 * (q[3] - q[2]))
+    # ... and their Bézier-to-Timmer form Q1 = (P0 + 3 P1)/4, Q2 = (P3 + 3 P2)/4.
+    back = bl.from_bezier("timmer", p)
+    np.testing.assert_allclose(back[1], (p[0] + 3 * p[1]) / 4)
+    np.testing.assert_allclose(back[2], (p[3] + 3 * p[2]) / 4)
+    np.testing.assert_allclose(bl.timmer_to_bezier([[0, 0], [3, 3], [6, 3], [9, 0]]), [[0, 0], [4, 4], [5, 4], [9, 0]], atol=1e-14)
+
+
+def test_conversion_matrices_hold_bernstein_coefficients():
+    np.testing.assert_array_equal(bl.conversion_matrix("bezier"), np.eye(4))
+    np.testing.assert_allclose(bl.conversion_matrix("timmer"), [[1, 0, 0, 0], [-1 / 3, 4 / 3, 0, 0], [0, 0, 4 / 3, -1 / 3], [0, 0, 0, 1]], atol=1e-15)
+    for form, basis in bl.FORMS.items():
+        # Peer: SciPy's Bernstein-form polynomials with these coefficients are the form's functions.
+        np.testing.assert_allclose(BPoly(bl.conversion_matrix(form)[:, None, :], [0, 1])(T), basis(T), atol=1e-14)
+
+
+def test_ball_conversion_is_corner_cutting():
+    q = random_points(4)
+    p = bl.ball_to_bezier(q)
+    np.testing.assert_allclose(p, [q[0], (q[0] + 2 * q[1]) / 3, (2 * q[2] + q[3]) / 3, q[3]])
+
+
+def test_overhauser_segment_bezier_points():
+    p = random_points(9, 5)
+    segments = bl.overhauser_to_bezier(p)
+    for j, segment in enumerate(segments):
+        expected = [p[j + 1], p[j + 1] + (p[j + 2] - p[j]) / 6, p[j + 2] - (p[j + 3] - p[j + 1]) / 6, p[j + 2]]
+        np.testing.assert_allclose(segment, expected)
+    np.testing.assert_allclose(segments[0], bl.to_bezier("overhauser", p[:4]))
+
+
+# --- lines, crossings and hulls -----------------------------------------------------------------
+
+
+def test_line_crossings_of_a_zigzag():
+    zigzag = np.array([[0.0, -1.0], [1.0, 1.0], [2.0, -1.0], [3.0, 1.0]])
+    crossings = bp.line_crossings(zigzag, [0.0, 2.0, 0.0])  # the x-axis, unnormalised
+    np.testing.assert_allclose(crossings, [[0.5, 0.0], [1.5, 0.0], [2.5, 0.0]])
+    assert bp.line_crossings(zigzag, [0.0, 1.0, -5.0]).shape == (0, 2)  # y = 5 misses it
+
+
+def test_touching_is_not_crossing_but_passing_through_a_vertex_is():
+    touch = np.array([[0.0, 1.0], [1.0, 0.0], [2.0, 1.0]])
+    assert len(bp.line_crossings(touch, [0, 1, 0])) == 0
+    through = np.array([[0.0, 1.0], [1.0, 0.0], [2.0, 0.0], [3.0, -1.0]])
+    np.testing.assert_allclose(bp.line_crossings(through, [0, 1, 0]), [[1.0, 0.0]])
+
+
+def test_sampled_curve_crossings_never_exceed_the_true_roots():
+    # Peer: the roots of the polynomial distance y(t) of an explicit Bézier cubic, by numpy.
+    rng = np.random.default_rng(0)
+    for _ in range(20):
+        p = np.column_stack([np.arange(4.0), rng.normal(size=4)])
+        samples = de_casteljau(p, np.linspace(0, 1, 400))
+        roots = Polynomial.fit(T, de_casteljau(p, T)[:, 1], 3).convert().roots()
+        inside = roots[(abs(roots.imag) < 1e-9) & (roots.real > 0) & (roots.real < 1)]
+        crossings = bp.line_crossings(samples, [0, 1, 0])
+        assert len(crossings) <= len(inside)
+        np.testing.assert_allclose(crossings[:, 1], 0.0, atol=1e-12)
+
+
+def test_convex_hull_matches_scipy():
+    rng = np.random.default_rng(4)
+    for count in (3, 4, 10, 40):
+        pts = rng.normal(size=(count, 2))
+        hull = bp.convex_hull(pts)
+        peer = pts[ConvexHull(pts).vertices]
+        assert {tuple(v) for v in hull} == {tuple(v) for v in peer}
+        signed_area = np.sum(hull[:, 0] * np.roll(hull[:, 1], -1) - np.roll(hull[:, 0], -1) * hull[:, 1]) / 2
+        assert signed_area == pytest.approx(ConvexHull(pts).volume)  # counter-clockwise
+
+
+def test_convex_hull_degenerate_cases():
+    np.testing.assert_allclose(bp.convex_hull([[0, 0], [1, 1], [2, 2], [0.5, 0.5]]), [[0, 0], [2, 2]])
+    np.testing.assert_allclose(bp.convex_hull([[1, 2], [1, 2]]), [[1, 2]])
+
+
+def test_distance_outside_hull():
+    square = [[0, 0], [2, 0], [2, 2], [0, 2], [1, 1]]
+    query = [[1, 1], [0, 0], [3, 1], [3, 3], [-1, 1]]
+    np.testing.assert_allclose(bp.distance_outside_hull(square, query), [0, 0, 1, np.sqrt(2), 1])
+    segment = [[0, 0], [2, 0]]
+    np.testing.assert_allclose(bp.distance_outside_hull(segment, [[1, 0], [1, 2]]), [0, 2])
+
+
+def test_timmer_and_overhauser_leave_the_hull_but_ball_and_bezier_do_not():
+    rng = np.random.default_rng(6)
+    escapes = {form: 0.0 for form in bl.FORMS}
+    for _ in range(30):
+        q = rng.uniform(-3, 3, (4, 2))
+        for form, basis in bl.FORMS.items():
+            escapes[form] = max(escapes[form], bp.distance_outside_hull(q, bl.blend(basis, q, T)).max())
+    assert escapes["bezier"] < 1e-12 and escapes["ball"] < 1e-12
+    assert escapes["timmer"] > 0.05 and escapes["overhauser"] > 0.05
+
+
+# --- the property checker (Notes §5) ------------------------------------------------------------
+
+
+@pytest.mark.parametrize("name", EXPECTED)
+def test_check_properties_of_the_chapters_sets(name):
+    report = bp.check_properties(NUMERIC[name])
+    assert tuple(report) == bp.PROPERTIES
+    assert all(isinstance(v, bp.Verdict) and v.reason for v in report.values())
+    assert {k: v.holds for k, v in report.items()} == EXPECTED[name]
+
+
+def test_timmer_violates_variation_diminishing_for_a_flat_polygon():
+    # Three points just above the x-axis and one high above: the polygon never meets the axis,
+    # but Timmer's f3 < 0 near t = 1/3 drags the curve below it and back.
+    q = np.array([[0.0, 0.01], [1.0, 0.01], [2.0, 0.01], [3.0, 1.0]])
+    assert len(bp.line_crossings(q, [0, 1, 0])) == 0
+    assert len(bp.line_crossings(bl.blend(bl.timmer_basis, q, T), [0, 1, 0])) == 2
+    assert len(bp.line_crossings(bl.blend(bl.bezier_basis, q, T), [0, 1, 0])) == 0
+
+
+def test_check_properties_finds_failures_in_made_up_sets():
+    power = lambda t: np.column_stack([np.ones_like(t), t, t**2])  # noqa: E731
+    report = bp.check_properties(power)
+    assert not report["coordinate_independence"].holds and not report["convex_hull"].holds
+    assert "sum to 1" in report["convex_hull"].reason
+    assert report["linear_independence"].holds and not report["endpoint_interpolation"].holds
+    twins = lambda t: np.column_stack([(1 - t) / 2, (1 - t) / 2, t])  # noqa: E731
+    report = bp.check_properties(twins)
+    assert report["coordinate_independence"].holds and not report["linear_independence"].holds
+    assert "rank 2" in report["linear_independence"].reason
+
+
+def test_check_properties_on_another_domain():
+    stretched = lambda t: bl.bezier_basis((t - 2) / 3, 5)  # noqa: E731
+    report = bp.check_properties(stretched, domain=(2, 5), probes=90)
+    assert all(v.holds for v in report.values())
+    assert not bp.check_properties(stretched, domain=(2, 6), probes=90)["symmetry"].holds
+
+
+def test_check_properties_is_reproducible():
+    assert bp.check_properties(bl.timmer_basis, seed=3) == bp.check_properties(bl.timmer_basis, seed=3)
+
+
+# --- exact checks with SymPy ----------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("name", EXPECTED)
+def test_symbolic_basis_agrees_with_the_numerical_one(name):
+    t = sp.Symbol("t")
+    functions = sp.lambdify(t, bp.symbolic_basis(name, t), "numpy")
+    values = np.column_stack([np.broadcast_to(v, T.shape) for v in functions(T)])
+    np.testing.assert_allclose(values, NUMERIC[name](T), atol=1e-14)
+
+
+@pytest.mark.parametrize("name", EXPECTED)
+def test_symbolic_properties_agree_with_the_notes(name):
+    t = sp.Symbol("t")
+    report = bp.symbolic_properties(bp.symbolic_basis(name, t), t)
+    expected = dict(EXPECTED[name], variation_diminishing=None)
+    assert {k: v.holds for k, v in report.items()} == expected
+
+
+def test_symbolic_details_of_the_rational_example():
+    t = sp.Symbol("t")
+    report = bp.symbolic_properties(bp.symbolic_basis("rational_example"), sp.Symbol("t"))
+    assert "t**2 + 1" in report["linear_independence"].reason and "rank 3" in report["linear_independence"].reason
+    timmer = bp.symbolic_properties(bp.symbolic_basis("timmer", t), t)
+    assert "-1/27" in timmer["convex_hull"].reason  # the exact minimum of f0 (and f3)
+    # A dependent set and a set on another domain.
+    assert not bp.symbolic_properties([1 - t, t, 2 - 2 * t], t)["linear_independence"].holds
+    shifted = bp.symbolic_properties([(3 - t) ** 2 / 4, (t - 1) * (3 - t) / 2, (t - 1) ** 2 / 4], t, domain=(1, 3))
+    assert all(v.holds for k, v in shifted.items() if k != "variation_diminishing")
+
+
+# --- bad input and untouched inputs ---------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "call, error, name",
+    [
+        (lambda: bl.timmer_basis([[0.1, 0.2]]), ValueError, "t"),
+        (lambda: bl.ball_basis("half"), TypeError, "t"),
+        (lambda: bl.overhauser_basis(np.nan), ValueError, "t"),
+        (lambda: bl.rational_example_basis([[0.5]]), ValueError, "t"),
+        (lambda: bl.bezier_basis(0.5, degree=-1), ValueError, "degree"),
+        (lambda: bl.blend("timmer", CUBIC, 0.5), TypeError, "basis"),
+        (lambda: bl.blend(bl.timmer_basis, CUBIC[:3], 0.5), ValueError, "points"),
+        (lambda: bl.blend(lambda t: np.ones(len(t)), CUBIC, T), ValueError, "basis"),
+        (lambda: bl.blend(lambda t: np.full((len(t), 4), np.nan), CUBIC, T), ValueError, "basis"),
+        (lambda: bl.overhauser_point(CUBIC[:3], 0.5), ValueError, "points"),
+        (lambda: bl.overhauser_point(CUBIC, 1.5), ValueError, "t"),
+        (lambda: bl.overhauser_point(CUBIC, [-0.1, 0.5]), ValueError, "t"),
+        (lambda: bl.overhauser_point([1.0, 2.0, 3.0, 4.0], 0.5), ValueError, "points"),
+        (lambda: bl.to_bezier("hermite", CUBIC), ValueError, "form"),
+        (lambda: bl.conversion_matrix("rational_example"), ValueError, "form"),
+        (lambda: bl.from_bezier("ball", CUBIC[:3]), ValueError, "points"),
+        (lambda: bl.timmer_to_bezier(np.vstack([CUBIC, CUBIC[:1]])), ValueError, "points"),
+        (lambda: bl.ball_to_bezier([[0, 0], [1, np.inf], [2, 0], [3, 0]]), ValueError, "points"),
+        (lambda: bl.overhauser_to_bezier(CUBIC[:3]), ValueError, "points"),
+        (lambda: bp.line_crossings(CUBIC, [0, 0, 1]), ValueError, "line"),
+        (lambda: bp.line_crossings(np.zeros((3, 3)), [0, 1, 0]), ValueError, "polyline"),
+        (lambda: bp.convex_hull(np.zeros((3, 3))), ValueError, "points"),
+        (lambda: bp.distance_outside_hull(CUBIC, [1.0, 2.0]), ValueError, "query"),
+        (lambda: bp.check_properties(bl.timmer_basis, domain=(1, 0)), ValueError, "domain"),
+        (lambda: bp.check_properties(bl.timmer_basis, samples=1), ValueError, "samples"),
+        (lambda: bp.check_properties(bl.timmer_basis, tol=-1.0), ValueError, "tol"),
+        (lambda: bp.check_properties([1, 2]), TypeError, "basis"),
+        (lambda: bp.symbolic_basis("hermite"), ValueError, "form"),
+        (lambda: bp.symbolic_properties([sp.Symbol("t")], "t"), TypeError, "t"),
+        (lambda: bp.symbolic_properties([], sp.Symbol("t")), ValueError, "functions"),
+        (lambda: bp.symbolic_properties([sp.sin(sp.Symbol("t"))], sp.Symbol("t")), ValueError, "functions"),
+        (lambda: bp.symbolic_properties([1 / (2 * sp.Symbol("t") - 1)], sp.Symbol("t")), ValueError, "functions"),
+    ],
+)
+def test_bad_input_is_rejected_with_the_arguments_name(call, error, name):
+    with pytest.raises(error, match=f"^{name}"):
+        call()
+
+
+def test_inputs_are_not_modified(unchanged):
+    points, t, many = CUBIC.copy(), T.copy(), random_points(2, 6)
+    unchanged(bl.timmer_basis, t)
+    unchanged(bl.ball_basis, t)
+    unchanged(bl.overhauser_basis, t)
+    unchanged(bl.bezier_basis, t)
+    unchanged(bl.rational_example_basis, t)
+    unchanged(bl.blend, bl.timmer_basis, points, t)
+    unchanged(bl.overhauser_point, many, 2 * t)
+    unchanged(bl.to_bezier, "ball", points)
+    unchanged(bl.from_bezier, "timmer", points)
+    unchanged(bl.timmer_to_bezier, points)
+    unchanged(bl.ball_to_bezier, points)
+    unchanged(bl.overhauser_to_bezier, many)
+    unchanged(bp.line_crossings, points, np.array([0.0, 1.0, -1.0]))
+    unchanged(bp.convex_hull, points)
+    unchanged(bp.distance_outside_hull, points, many)
+    unchanged(bp.check_properties, bl.ball_basis, np.array([0.0, 1.0]), probes=30)
+
+
+@pytest.mark.parametrize("form", sorted(bl.POWER_COEFFICIENTS))
+def test_power_coefficient_tables_are_the_blending_functions(form):
+    ts = np.linspace(0, 1, 7)
+    table = bl.POWER_COEFFICIENTS[form]
+    expected = np.stack([np.polynomial.polynomial.polyval(ts, table[:, i]) for i in range(4)], axis=1)
+    np.testing.assert_allclose(bl.FORMS[form](ts), expected, atol=1e-14)
+
+
+def test_basis_values_checks_what_a_blending_set_returns():
+    ts = np.linspace(0, 1, 3)
+    assert bl.basis_values(bl.ball_basis, ts).shape == (3, 4)
+    with pytest.raises(TypeError, match="basis"):
+        bl.basis_values("ball", ts)
+    with pytest.raises(ValueError, match="basis"):
+        bl.basis_values(lambda t: np.ones(len(t)), ts)
