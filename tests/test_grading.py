@@ -195,3 +195,8 @@ def test_score_is_the_mean_over_categories_of_the_fraction_passed():
 def test_seeds_depend_on_the_run_seed_and_the_submission_name_only():
     assert submission_seed(0, "ann") == submission_seed(0, "ann")
     assert len({submission_seed(0, "ann"), submission_seed(1, "ann"), submission_seed(0, "bob")}) == 3
+
+
+def test_the_worker_reports_its_file_system_confinement():
+    outcome = _grade(GOOD)
+    assert "landlock ABI" in outcome.run.sandbox, outcome.run.sandbox

@@ -39,6 +39,7 @@ class GradeRow:
     exercises: dict[str, float]
     seed: int
     seconds: dict[str, float] | None = None
+    sandbox: str = ""
 
     def as_csv(self, exercise_ids: list[str]) -> list[str]:
         return [self.submission, _number(self.score), _number(self.max_score), self.status] + [
@@ -126,6 +127,7 @@ def grade_one(name: str, path: Path, exercises, base_seed: int, limits: Limits, 
         {r.id: r.score for r in outcome.exercises},
         seed,
         {r.id: r.seconds for r in outcome.exercises},
+        outcome.run.sandbox,
     )
 
 
@@ -143,13 +145,17 @@ class ClassSummary:
     max_score: float
     slowest_exercise: str
     seconds: float
+    unconfined: str = ""
 
     def __str__(self) -> str:
-        return (
+        text = (
             f"graded {self.graded} submission(s) (skipped {self.skipped} already graded) in {self.seconds:.1f} s; "
             f"{self.failed_to_run} did not run cleanly; mean score {self.mean_score:.2f} / {self.max_score:g}"
             + (f"; slowest exercise {self.slowest_exercise}" if self.slowest_exercise else "")
         )
+        if self.unconfined:
+            text += f"\nWARNING: graded code could write files as your user ({self.unconfined}); grade in a container or VM."
+        return text
 
 
 def grade_class(
@@ -209,4 +215,5 @@ def _summary(rows: list[GradeRow], skipped: int, max_score: float, started: floa
             totals[exercise_id] = totals.get(exercise_id, 0.0) + seconds
     slowest = max(totals, key=totals.get, default="")
     label = f"{slowest} ({totals[slowest] / len(rows):.2f} s per submission)" if slowest else ""
-    return ClassSummary(len(rows), skipped, failed, mean, max_score, label, time.monotonic() - started)
+    unconfined = next((r.sandbox for r in rows if r.sandbox and "landlock ABI" not in r.sandbox), "")
+    return ClassSummary(len(rows), skipped, failed, mean, max_score, label, time.monotonic() - started, unconfined)

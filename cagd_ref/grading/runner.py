@@ -61,6 +61,7 @@ class RunResult:
     output: str = ""
     output_truncated: bool = False
     seconds: dict[str, float] = field(default_factory=dict)
+    sandbox: str = ""
 
 
 def worker_path() -> Path:
@@ -203,6 +204,7 @@ class _Session:
         if kind == "loaded":
             self.loaded = True
             self.result.load_problems = [str(p) for p in event.get("problems", [])][:50]
+            self.result.sandbox = str(event.get("sandbox", ""))[:200]
         elif kind == "start":
             expected = self.tasks[0].exercise if self.tasks else None
             if event.get("exercise") != expected:

@@ -248,17 +248,21 @@ def apply_sandbox(policy: dict) -> str:
     """Confine this process before any submitted code runs; return a note of what was applied."""
     import resource
 
-    for limit, value in (
-        (resource.RLIMIT_AS, policy["memory_bytes"]),
-        (resource.RLIMIT_FSIZE, policy["file_bytes"]),
-        (resource.RLIMIT_CORE, 0),
-    ):
-        resource.setrlimit(limit, (value, value))
+    notes = []
+    for name, value in (("RLIMIT_AS", policy["memory_bytes"]), ("RLIMIT_FSIZE", policy["file_bytes"]), ("RLIMIT_CORE", 0)):
+        try:
+            resource.setrlimit(getattr(resource, name), (value, value))
+        except (AttributeError, ValueError, OSError):
+            # Some systems (macOS for the address space) refuse a limit; grade without it, and say so.
+            notes.append(f"{name} unavailable")
     if policy.get("trusted"):
-        return "rlimits"
-    note = _landlock(policy["readable"], [policy["workdir"]])
-    _drop_capabilities()
-    return note
+        return "; ".join(notes or ["rlimits"])
+    if sys.platform.startswith("linux"):
+        notes.append(_landlock(policy["readable"], [policy["workdir"]]))
+        _drop_capabilities()
+    else:
+        notes.append("no file-system confinement on this platform")
+    return "; ".join(notes)
 
 
 def serve(request: dict, channel: Channel) -> None:
