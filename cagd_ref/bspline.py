@@ -24,6 +24,7 @@ import numpy as np
 
 from .bezier import hodograph as bezier_hodograph
 from ._validation import as_count, as_float_array, as_parameter, as_points, as_scalar
+from .polynomials import BLOCK
 
 __all__ = [
     "de_boor",
@@ -165,16 +166,30 @@ def de_boor(points, knots, t) -> np.ndarray:
 
     points: (c, d); knots: (c+n-1,) in the notes' convention. t: a number in
     the domain -> (d,), or k numbers -> (k, d). Each t's span is found with a
-    binary search, its n+1 control points are gathered into a (k, n+1, d) array
-    and the triangle of affine combinations runs on all of them together.
+    binary search; then, a block of parameters at a time, the n+1 control
+    points of each span are gathered coordinate by coordinate and the triangle
+    of affine combinations runs on all of them together.
     """
     pts, kn, n = _spline(points, knots)
     ts, scalar = as_parameter(t)
     _in_domain(ts, kn, n)
-    local_points, local_knots = _gather(pts, kn, n, _spans(kn, n, ts))
-    values = np.repeat(ts[:, None], n, axis=1)
-    result = _triangle(local_points, local_knots, values)[-1][:, 0]
-    return result[0] if scalar else result
+    first = _spans(kn, n, ts) - n + 1  # index of the first control point of each t's span
+    # Coordinate-major storage makes every pass run over contiguous parameters, and
+    # blocks keep a block's arrays in cache through all n levels.
+    coordinates = np.ascontiguousarray(pts.T)  # (d, c)
+    result = np.empty((pts.shape[1], len(ts)))
+    for start in range(0, len(ts), BLOCK):
+        block = slice(start, start + BLOCK)
+        tau, offset = ts[block], first[block]
+        level = np.take(coordinates, offset + np.arange(n + 1)[:, None], axis=1)  # (d, n+1, m)
+        local_knots = np.take(kn, offset + np.arange(2 * n)[:, None])  # (2n, m)
+        for r in range(1, n + 1):
+            lower, upper = local_knots[r - 1 : n], local_knots[n : 2 * n - r + 1]
+            alpha = (tau - lower) / (upper - lower)
+            count = n + 1 - r  # points on level r
+            level[:, :count] = (1 - alpha) * level[:, :count] + alpha * level[:, 1 : count + 1]
+        result[:, block] = level[:, 0]
+    return result[:, 0] if scalar else result.T
 
 
 def de_boor_triangle(points, knots, t) -> tuple[list[np.ndarray], int]:
