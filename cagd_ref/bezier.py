@@ -9,6 +9,7 @@ algorithm runs on those (d+1)-dimensional points unchanged, and
 
 from __future__ import annotations
 
+import functools
 from math import comb
 
 import numpy as np
@@ -22,6 +23,7 @@ from ._validation import (
     as_vector,
     as_weights,
 )
+from .polynomials import BLOCK, bernstein_horner
 
 __all__ = [
     "bernstein",
@@ -54,6 +56,8 @@ def _local_parameter(t, interval) -> tuple[np.ndarray, bool]:
     """Map t in `interval` to the local parameter of [0, 1], as a 1-D array."""
     ts, scalar = as_parameter(t)
     t0, t1 = as_interval(interval)
+    if (t0, t1) == (0.0, 1.0):
+        return ts, scalar  # already local: spare long arrays two passes
     return (ts - t0) / (t1 - t0), scalar
 
 
@@ -92,20 +96,68 @@ def de_casteljau_triangle(points, t) -> list[np.ndarray]:
     return levels
 
 
+def _in_blocks(evaluator):
+    """Decorator: an evaluator `f(points, t)` of all k parameters at once, run on blocks of BLOCK values.
+
+    The vectorised algorithms below make a few passes over their working
+    arrays per round. For one block those arrays are small enough to stay in
+    the processor's cache through every round; for a million parameters at
+    once they are hundreds of megabytes, streamed through memory again in each
+    round. Up to BLOCK values the evaluator is called as it is; beyond, on
+    consecutive blocks, whose (m, d) results fill one (k, d) array. Either way
+    the result is the same.
+    """
+
+    @functools.wraps(evaluator)
+    def in_blocks(points, t):
+        ts, _ = as_parameter(t)
+        if len(ts) <= BLOCK:
+            return evaluator(points, t)
+        # Filled coordinate-major, as the algorithms compute: each block's rows are copied contiguously.
+        values = np.empty((as_points(points).shape[1], len(ts)))
+        for start in range(0, len(ts), BLOCK):
+            values[:, start : start + BLOCK] = evaluator(points, ts[start : start + BLOCK]).T
+        return values.T
+
+    return in_blocks
+
+
+@_in_blocks
 def de_casteljau(points, t) -> np.ndarray:
     """Point(s) of the Bézier curve on [0, 1] by repeated linear interpolation. Notes §2.3.
 
     points: (n+1, d). t: a number -> (d,), or a 1-D array of k values -> (k, d).
-    All k parameters go through the triangle at once.
+    All k parameters go through the triangle at once (very long arrays a
+    block at a time, see `_in_blocks`: that only makes it faster).
     """
     pts = as_points(points)
     ts, scalar = as_parameter(t)
-    s = ts[:, None, None]
-    level = np.broadcast_to(pts, (len(ts),) + pts.shape)
-    for _ in range(len(pts) - 1):
-        level = (1 - s) * level[:, :-1] + s * level[:, 1:]
-    result = level[:, 0, :]
-    return result[0].copy() if scalar else result
+    s = 1 - ts
+    # Every parameter gets its own copy of the polygon. The copies are stored
+    # coordinate-major, (n+1, d, k), so that each round below is three in-place
+    # passes over contiguous rows of k numbers, with no temporary arrays.
+    level = np.repeat(pts[:, :, None], len(ts), axis=2)
+    right = np.empty_like(level[:-1])
+    for m in range(len(pts) - 1, 0, -1):  # this round turns m+1 points into m
+        np.multiply(level[1 : m + 1], ts, out=right[:m])  # t P_(i+1)
+        level[:m] *= s  # (1 - t) P_i
+        level[:m] += right[:m]  # P_i <- (1 - t) P_i + t P_(i+1)
+    # A copy in the usual (k, d) layout, so the result does not keep the whole triangle alive.
+    result = level[0].T.copy()
+    return result[0] if scalar else result
+
+
+# Above this degree `evaluate` runs the de Casteljau triangle instead of the nested
+# form: the factors C(n, i) P_i of the nested form would grow towards overflow
+# (C(50, 25) is about 1.3e14), while the triangle only ever averages points.
+MAX_NESTED_DEGREE = 50
+
+
+def _curve_points(pts: np.ndarray, ts: np.ndarray) -> np.ndarray:
+    """Σ B_i^n(t) P_i at k parameters, (k, d): the nested Bernstein form (O(n) per point), or de Casteljau at high degree."""
+    if len(pts) - 1 > MAX_NESTED_DEGREE:
+        return de_casteljau(pts, ts)
+    return bernstein_horner(pts, ts)
 
 
 def subdivide(points, t=0.5) -> tuple[np.ndarray, np.ndarray]:
@@ -181,21 +233,22 @@ def evaluate(points, t, weights=None, interval=(0, 1)) -> np.ndarray:
 
     points: (n+1, d); weights: None or (n+1,). t: a number -> (d,), or k values -> (k, d).
     A rational curve is evaluated on its homogeneous control points and projected.
+    The sum (2.2) is formed in nested form (see `_curve_points`), O(n) per point.
     """
     pts = as_points(points)
     tau, scalar = _local_parameter(t, interval)
     if weights is None:
-        values = de_casteljau(pts, tau)
+        values = _curve_points(pts, tau)
     else:
-        values = _project(de_casteljau(to_homogeneous(pts, weights), tau), tau)
-    return values[0] if scalar else values
+        values = _project(_curve_points(to_homogeneous(pts, weights), tau), tau)
+    return values[0].copy() if scalar else values
 
 
 def _homogeneous_derivatives(h: np.ndarray, tau: np.ndarray, order: int, interval) -> list[np.ndarray]:
     """Values of the homogeneous curve and its first `order` derivatives at tau, each (k, d+1)."""
     values, curve = [], h
     for _ in range(order + 1):
-        values.append(de_casteljau(curve, tau))
+        values.append(_curve_points(curve, tau))
         curve = hodograph(curve, interval)
     return values
 

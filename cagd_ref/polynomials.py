@@ -32,6 +32,8 @@ __all__ = [
 
 # C(n, n/2) no longer fits in a double from n = 1030 on.
 MAX_BINOMIAL_DEGREE = 1029
+# Parameters evaluated together: small enough for the cache, large enough for NumPy.
+BLOCK = 32768
 
 
 def _binomials(n: int, name: str = "coeffs") -> np.ndarray:
@@ -106,22 +108,31 @@ def bernstein_horner(coeffs: ArrayLike, t: ArrayLike, interval: ArrayLike = (0, 
     costs 3n multiplies and n + 1 adds (see `evaluation_cost`), against the
     O(n²) of the de Casteljau triangle. coeffs: Bernstein coefficients (n+1,)
     or (n+1, d) on `interval`; u = (t - t0) / (t1 - t0). Shapes as in `horner`.
+    This is also how `cagd_ref.bezier.evaluate` computes curve points.
     """
     b = as_coefficients(coeffs)
     ts, scalar = as_parameter(t)
     t0, t1 = as_interval(interval)
     n = len(b) - 1
-    if n == 0:
-        return _finish(_constant(b[0], len(ts)), scalar)
-    c = b * _column(_binomials(n), b)
-    u = _column((ts - t0) / (t1 - t0), b)
-    s = 1 - u
-    power = np.ones_like(u)
-    value = c[0] * s
-    for coefficient in c[1:-1]:
-        power = power * u
-        value = (value + power * coefficient) * s
-    return _finish(value + power * u * c[-1], scalar)
+    c = (b * _column(_binomials(n), b)).reshape(n + 1, -1)  # (n+1, d): one column per polynomial
+    u = ts if (t0, t1) == (0.0, 1.0) else (ts - t0) / (t1 - t0)
+    # Coordinate-major results, filled a block of parameters at a time: each pass runs over
+    # contiguous numbers, and a block's arrays stay in the processor's cache for all n steps.
+    values = np.empty((c.shape[1], len(u)))
+    for start in range(0, len(u), BLOCK):
+        x = u[start : start + BLOCK]
+        value = values[:, start : start + BLOCK]
+        if n == 0:
+            value[:] = c[0][:, None]
+            continue
+        s, power = 1 - x, np.ones_like(x)
+        np.multiply(c[0][:, None], s, out=value)  # c0 s
+        for coefficient in c[1:-1]:
+            power *= x  # uⁱ
+            value += coefficient[:, None] * power  # + c_i uⁱ
+            value *= s  # ... then the next factor s
+        value += c[-1][:, None] * (power * x)  # + c_n uⁿ
+    return _finish(values.T if b.ndim == 2 else values[0], scalar)
 
 
 def evaluation_cost(degree: int) -> dict[str, tuple[int, int]]:
