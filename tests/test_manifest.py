@@ -52,7 +52,9 @@ def test_at_least_ten_exercises_in_chapters_one_and_two():
 
 def _conda_dependencies() -> list[str]:
     text = (ROOT / "environment.yml").read_text()
-    return re.findall(r"^\s+-\s+(\S+)", text.split("dependencies:", 1)[1], flags=re.M)
+    # Conda packages and the entries of its `pip:` subsection; "pip" itself is the installer, not a dependency.
+    found = re.findall(r"^\s+-\s+(\S+)", text.split("dependencies:", 1)[1], flags=re.M)
+    return [entry for entry in found if entry not in ("pip", "pip:")]
 
 
 def _name(requirement: str) -> str:
