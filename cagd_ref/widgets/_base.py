@@ -67,6 +67,11 @@ def _ipympl_manager(figure: Figure):
     return new_figure_manager_given_figure(id(figure), figure)
 
 
+def _swatch(color: str) -> str:
+    """A small coloured square in HTML for a readout's colour key (matplotlib colour names such as 'C3')."""
+    return f"<span style='color:{matplotlib.colors.to_hex(color)}'>&#9632;</span>"
+
+
 def _fmt(vector) -> str:
     return "(" + ", ".join(f"{v:.4g}" for v in np.ravel(vector)) + ")"
 

@@ -6,11 +6,12 @@ import html
 
 import ipywidgets as widgets
 import numpy as np
+from matplotlib.ticker import MaxNLocator
 
 from .._validation import as_vector
 from ..geometry import conic_discriminant, conic_type, rotate_about_axis, rotation_matrix
 from ..plotting import plot_implicit, plot_vector
-from ._base import Explorer, _fmt, _slider
+from ._base import Explorer, _fmt, _slider, _swatch
 
 __all__ = ["rotation_explorer", "conic_explorer", "RotationExplorer", "ConicExplorer"]
 
@@ -76,10 +77,17 @@ class RotationExplorer(Explorer):
         ax.set_ylabel("y")
         ax.set_zlabel("z")
         ax.set_title(f"Rotating P by {state['angle']:.0f}° about an axis", fontsize=10)
-        ax.legend(fontsize=7, loc="upper left")
+        # Three ticks per axis: 3-D tick labels are most of the drawing time.
+        for axis in (ax.xaxis, ax.yaxis, ax.zaxis):
+            axis.set_major_locator(MaxNLocator(3))
 
     def describe(self, state: dict) -> str:
-        return f"P′ = {_fmt(state['point'])}<br>axis n = {_fmt(state['axis'])}"
+        # The colour key lives here rather than in a legend, which would double the drawing time.
+        return (
+            f"P′ = {_fmt(state['point'])}<br>axis n = {_fmt(state['axis'])}<br>"
+            f"{_swatch('C1')} P &nbsp; {_swatch('C3')} P′ and the arc of θ = {state['angle']:.0f}° &nbsp; "
+            f"{_swatch('C0')} circle of rotation &nbsp; {_swatch('0.4')} its centre C &nbsp; {_swatch('0.3')} the axis"
+        )
 
 
 def rotation_explorer(point=ROTATED_POINT, axis_point=AXIS_POINT) -> RotationExplorer:

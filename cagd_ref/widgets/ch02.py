@@ -19,7 +19,7 @@ from ..plotting import (
     plot_curvature_comb,
     plot_de_casteljau,
 )
-from ._base import CURVE_SAMPLES, DEFAULT_CUBIC, FAMILY_WEIGHTS, Explorer, _control_points, _fmt, _slider, _want_ipympl
+from ._base import CURVE_SAMPLES, DEFAULT_CUBIC, FAMILY_WEIGHTS, Explorer, _control_points, _fmt, _slider, _swatch, _want_ipympl
 
 __all__ = [
     "de_casteljau_explorer",
@@ -69,13 +69,20 @@ class DeCasteljauExplorer(Explorer):
         if self.extrapolate:
             plot_bezier(ax, self.points, interval=(-0.5, 1.5), color="C0", linestyle=":", linewidth=1)
         plot_de_casteljau(ax, self.points, t, curve=False)
-        ax.plot(*state["left"].T, color="C4", linewidth=3, alpha=0.35, label=f"left piece, [0, {t:.2f}]")
-        ax.plot(*state["right"].T, color="C5", linewidth=3, alpha=0.35, label=f"right piece, [{t:.2f}, 1]")
+        ax.plot(*state["left"].T, color="C4", linewidth=3, alpha=0.35)
+        ax.plot(*state["right"].T, color="C5", linewidth=3, alpha=0.35)
         ax.set_title(f"de Casteljau's algorithm at t = {t:.2f}")
-        ax.legend(fontsize=7, loc="lower center")
 
     def describe(self, state: dict) -> str:
-        return f"P({state['t']:.2f}) = {_fmt(state['point'])}"
+        # The colour key lives here rather than in a legend: drawing legend text
+        # would cost more than everything else an update does.
+        t = state["t"]
+        return (
+            f"P({t:.2f}) = {_fmt(state['point'])}<br>"
+            f"{_swatch('C0')} the curve &nbsp; {_swatch('C4')} left piece [0, {t:.2f}] &nbsp; "
+            f"{_swatch('C5')} right piece [{t:.2f}, 1]<br>"
+            "grey dashes: control polygon; coloured polygons: levels 1, 2, ... of the triangle; black: P(t)"
+        )
 
 
 def de_casteljau_explorer(points=None, extrapolate: bool = False) -> DeCasteljauExplorer:
