@@ -30,7 +30,8 @@ FACTORIES = {
 
 def test_module_exports_what_the_tests_cover():
     assert set(ch03.__all__) == {
-        "basis_conversion_explorer", "evaluation_cost_explorer", "draw_difference_table", "power_text",
+        "basis_conversion_explorer", "evaluation_cost_explorer", "draw_difference_table", "difference_table_html",
+        "power_text",
         "BasisConversionExplorer", "EvaluationCostExplorer",
     }
     assert set(ch03.__all__) <= set(widgets.__all__)
@@ -107,19 +108,21 @@ def test_basis_conversion_default_is_the_notes_weights_and_sliders_move_it():
     assert "24t" in explorer.readout.value
 
 
-def test_basis_conversion_table_is_drawn_in_its_own_panel():
+def test_basis_conversion_table_is_shown_in_the_readout():
     explorer = widgets.basis_conversion_explorer()
-    assert len(explorer.figure.axes) == 2
-    table = explorer.table_ax
-    texts = [t.get_text() for t in table.texts]
-    # 10 table entries, 4 power coefficients, 4 "× C(3, j)" labels, 4 row labels and 2 headers.
-    assert len(texts) == 24
-    assert {"7", "-4", "-12", "← ×3", "Δ³"} <= set(texts)
+    assert len(explorer.figure.axes) == 1 and explorer.ax.get_legend() is None
+    readout = explorer.readout.value
+    # The notes' weights: top row 1, 3, 1, 2; left column 1, 2, -4, 3; power 1, 6, -12, 7.
+    for entry in (">7<", ">-4<", ">-12<", "← ×3", "Δ³"):
+        assert entry in readout
     explorer.update(b3=-2.5)
-    assert "-2.5" in [t.get_text() for t in table.texts]
-    # One static legend for the figure, however often it is redrawn.
-    explorer.update(b0=2.0)
-    assert len(explorer.figure.legends) == 1 and explorer.ax.get_legend() is None
+    assert ">-2.5<" in explorer.readout.value
+
+
+def test_difference_table_html_matches_the_drawn_table():
+    html_table = widgets.difference_table_html([0.0, 1.0, 4.0])
+    assert html_table.count("<tr>") == 4  # header and three rows
+    assert ">4<" in html_table and "← ×2" in html_table and "Δ²" in html_table
 
 
 @pytest.mark.parametrize("bad, error", [

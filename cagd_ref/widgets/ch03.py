@@ -9,18 +9,18 @@ from math import comb
 import ipywidgets as widgets
 import numpy as np
 from matplotlib.axes import Axes
-from matplotlib.lines import Line2D
 from numpy.typing import ArrayLike
 
 from .._validation import as_coefficients, as_count
-from ..plotting import POLYGON_STYLE, plot_control_polygon
+from ..plotting import plot_control_polygon
 from ..polynomials import bernstein_horner, bernstein_to_power, difference_table, evaluation_cost, horner
-from ._base import CURVE_SAMPLES, Explorer, _fmt, _slider
+from ._base import CURVE_SAMPLES, Explorer, _fmt, _slider, _swatch
 
 __all__ = [
     "basis_conversion_explorer",
     "evaluation_cost_explorer",
     "draw_difference_table",
+    "difference_table_html",
     "power_text",
     "BasisConversionExplorer",
     "EvaluationCostExplorer",
@@ -122,14 +122,44 @@ def draw_difference_table(ax: Axes, coeffs: ArrayLike, power: bool = True, fonts
     return ax
 
 
+def difference_table_html(coeffs: ArrayLike) -> str:
+    """The difference table of `draw_difference_table` as an HTML table, for readouts. Notes ch. 3.
+
+    Row j: the power coefficient a_j = C(n, j) Δʲ b_0 (orange), "← ×C(n, j)", then
+    Δʲ b_0 ... Δʲ b_(n-j); the top row (the Bernstein coefficients) is blue.
+    """
+    rows = difference_table(coeffs)
+    n = len(rows) - 1
+    powers = bernstein_to_power(coeffs)
+    cell = "<td style='padding:1px 6px;text-align:center;{}'>{}</td>"
+    top, left = "background:#d6e6f5", "background:#fde3c8"
+    lines = ["<table style='border-collapse:collapse;font-size:90%'>",
+             "<tr><th>a<sub>j</sub></th><th></th><th colspan='{}'>b<sub>i</sub> (Bernstein), then Δ, Δ², …</th></tr>"
+             .format(n + 1)]
+    for j, row in enumerate(rows):
+        entries = "".join(
+            cell.format(top if j == 0 else (left if i == 0 else ""), html.escape(_entry(value)))
+            for i, value in enumerate(row)
+        )
+        label = f"Δ{_superscript(j)}" if j else "b"
+        lines.append(
+            f"<tr>{cell.format(left, html.escape(_entry(powers[j])))}"
+            f"<td style='color:#d62728;padding:1px 4px'>← ×{comb(n, j)}</td>{entries}"
+            f"<td style='color:#888;padding:1px 4px'>{label}</td></tr>"
+        )
+    lines.append("</table>")
+    return "".join(lines)
+
+
 # ---------------------------------------------------------------- basis conversion
 
 
 class BasisConversionExplorer(Explorer):
-    """Sliders for the Bernstein coefficients of an explicit polynomial; its power form and table. Notes ch. 3."""
+    """Sliders for the Bernstein coefficients of an explicit polynomial; its power form and table. Notes ch. 3.
 
-    figsize = (10.0, 4.2)
-    dpi = 80  # two panels: fewer pixels keep a redraw as quick as the one-panel explorers
+    The figure holds the curve; the difference table and the colour key are
+    HTML in the readout, where text is crisp and costs the redraw nothing.
+    """
 
     def __init__(self, coeffs=None):
         b = as_coefficients(DEFAULT_BERNSTEIN if coeffs is None else coeffs)
@@ -139,7 +169,6 @@ class BasisConversionExplorer(Explorer):
                 f"coeffs: expected 2 to {MAX_EXPLORED_DEGREE + 1} numbers in [{low:g}, {high:g}], shape (n+1,), "
                 f"got {b.tolist()}"
             )
-        self.table_ax: Axes | None = None
         controls = {
             f"b{i}": _slider(widgets.FloatSlider, f"b{i}", min=low, max=high, step=0.25, value=float(v))
             for i, v in enumerate(b)
@@ -160,27 +189,7 @@ class BasisConversionExplorer(Explorer):
             "text": power_text(a),
         }
 
-    def _panels(self) -> tuple[Axes, Axes]:
-        """The curve axes and the table axes.
-
-        The table's axes are added on the first drawing (the figure exists only
-        once `Explorer` is set up) and emptied on every later one.
-        """
-        if self.table_ax is None:
-            self.ax.set_position([0.07, 0.13, 0.36, 0.72])
-            self.table_ax = self.figure.add_axes([0.47, 0.03, 0.52, 0.82])
-            # The legend never changes: one figure legend in the table's empty corner, made once.
-            self.figure.legend(handles=[
-                Line2D([], [], **POLYGON_STYLE, label="control points (i/n, $b_i$)"),
-                Line2D([], [], **CURVE_STYLE, label="Bernstein form"),
-                Line2D([], [], **POWER_STYLE, label="power form (Horner)"),
-            ], loc="lower right", bbox_to_anchor=(0.98, 0.04), fontsize=8, frameon=False)
-        for artist in [*self.table_ax.texts, *self.table_ax.patches]:
-            artist.remove()
-        return self.ax, self.table_ax
-
     def draw(self, ax, state: dict) -> None:
-        ax, table_ax = self._panels()
         b, t = state["bernstein"], state["t"]
         n = len(b) - 1
         control = np.column_stack([np.arange(n + 1) / n, b])
@@ -192,13 +201,12 @@ class BasisConversionExplorer(Explorer):
         ax.set_xlabel("t")
         ax.set_ylabel("p(t)")
         ax.set_title(f"p(t) = {state['text']}", fontsize=9)
-        draw_difference_table(table_ax, b)
-        table_ax.set_title("difference table: top row in, left column × C(n, j) out", fontsize=9)
 
     def describe(self, state: dict) -> str:
         return (
-            f"Bernstein b = {_fmt(state['bernstein'])}<br>power a = {_fmt(state['power'])}<br>"
-            f"p(t) = {html.escape(state['text'])}"
+            f"p(t) = {html.escape(state['text'])}<br>"
+            f"{_swatch('0.4')} control points (i/n, b<sub>i</sub>) &nbsp; {_swatch('C0')} Bernstein form &nbsp; "
+            f"{_swatch('C1')} power form (Horner)<br>{difference_table_html(state['bernstein'])}"
         )
 
 
@@ -207,7 +215,7 @@ def basis_conversion_explorer(coeffs: ArrayLike | None = None) -> BasisConversio
 
     coeffs: (n+1,) with 1 <= n <= 6, default (1, 3, 1, 2), the weights of the
     notes' rational example. Draws the explicit Bézier curve with both
-    evaluations and the difference table. `update` returns {"bernstein" (n+1,),
+    evaluations; the readout shows the difference table. `update` returns {"bernstein" (n+1,),
     "power" (n+1,), "table" (list of rows), "t" (200,), "bernstein_values"
     (200,), "power_values" (200,), "text" (the power form as text)}.
     """
