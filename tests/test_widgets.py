@@ -1,4 +1,4 @@
-"""cagd_ref.widgets: every explorer driven without a browser, through `update` and through its sliders."""
+"""The explorers of chapters 1 and 2 driven without a browser; what every explorer must do is in test_widgets_common.py."""
 
 import matplotlib
 
@@ -17,60 +17,6 @@ from cagd_ref.continuity import Continuity
 from cagd_ref.geometry import rotate_about_axis
 
 CUBIC = np.array([[0.0, 0.0], [1.0, 3.0], [3.0, 3.0], [5.0, 1.0]])
-
-FACTORIES = {
-    "de_casteljau_explorer": ({"t": 0.3}, {"point", "left", "right"}),
-    "control_point_editor": ({"x1": 1.5}, {"points", "curve"}),
-    "rational_weight_explorer": ({"weight": 3.0}, {"weights", "curve"}),
-    "degree_elevation_explorer": ({"steps": 4}, {"polygon", "distance"}),
-    "subdivision_explorer": ({"depth": 3}, {"polygons", "distance"}),
-    "curvature_comb_explorer": ({"teeth": 20, "length": 2.0}, {"bases", "tips", "max_curvature"}),
-    "continuity_explorer": ({"h": 2.0}, {"continuity", "text"}),
-    "rotation_explorer": ({"angle": 45.0, "axis_x": 1.0}, {"point", "matrix"}),
-    "conic_explorer": ({"b": 3.0}, {"type", "discriminant"}),
-}
-
-
-# ---------------------------------------------------------------- shared mechanism
-
-
-@pytest.mark.parametrize("name", FACTORIES)
-def test_every_explorer_updates_redraws_and_displays(name):
-    values, keys = FACTORIES[name]
-    explorer = getattr(widgets, name)()
-    before = explorer.view.value
-    assert before[:8] == b"\x89PNG\r\n\x1a\n"
-    state = explorer.update(**values)
-    assert keys <= set(state)
-    assert explorer.state is state
-    assert explorer.view.value != before
-    for key, value in values.items():
-        assert explorer.values[key] == pytest.approx(value)
-    assert isinstance(explorer.widget, ipywidgets.Box)
-    bundle = explorer._repr_mimebundle_()
-    assert "application/vnd.jupyter.widget-view+json" in bundle
-    assert bundle["image/png"][:4] == b"\x89PNG"
-    assert explorer.ax.get_title()
-
-
-@pytest.mark.parametrize("name", FACTORIES)
-def test_redrawing_replaces_the_old_drawing(name):
-    explorer = getattr(widgets, name)()
-    counts = (len(explorer.ax.lines), len(explorer.ax.collections), len(explorer.ax.texts), len(explorer.ax.patches))
-    explorer.update()
-    explorer.update()
-    assert (len(explorer.ax.lines), len(explorer.ax.collections), len(explorer.ax.texts), len(explorer.ax.patches)) == counts
-
-
-@pytest.mark.parametrize("name", FACTORIES)
-def test_moving_a_slider_calls_update(name):
-    values, _ = FACTORIES[name]
-    explorer = getattr(widgets, name)()
-    control, value = next(iter(values.items()))
-    before_png, before_state = explorer.view.value, explorer.state
-    explorer.controls[control].value = value
-    assert explorer.state is not before_state
-    assert explorer.view.value != before_png
 
 
 def test_update_keeps_omitted_controls_and_rejects_unknown_or_bad_values():

@@ -4,7 +4,6 @@ import matplotlib
 
 matplotlib.use("Agg")
 
-import ipywidgets
 import numpy as np
 import numpy.polynomial.polynomial as npp
 import pytest
@@ -22,10 +21,6 @@ NOTES_COLUMNS = {
     "W": ([1.0, 3.0, 1.0, 2.0], [1.0, 6.0, -12.0, 7.0]),
 }
 
-FACTORIES = {
-    "basis_conversion_explorer": ({"b1": 4.5}, {"bernstein", "power", "table", "text"}),
-    "evaluation_cost_explorer": ({"degree": 7}, {"degree", "costs", "totals"}),
-}
 
 
 def test_module_exports_what_the_tests_cover():
@@ -35,50 +30,6 @@ def test_module_exports_what_the_tests_cover():
         "BasisConversionExplorer", "EvaluationCostExplorer",
     }
     assert set(ch03.__all__) <= set(widgets.__all__)
-
-
-# ---------------------------------------------------------------- shared mechanism
-
-
-@pytest.mark.parametrize("name", FACTORIES)
-def test_every_explorer_updates_redraws_and_displays(name):
-    values, keys = FACTORIES[name]
-    explorer = getattr(widgets, name)()
-    before = explorer.view.value
-    assert before[:8] == b"\x89PNG\r\n\x1a\n"
-    state = explorer.update(**values)
-    assert keys <= set(state)
-    assert explorer.state is state
-    assert explorer.view.value != before
-    assert isinstance(explorer.widget, ipywidgets.Box)
-    assert explorer._repr_mimebundle_()["image/png"][:4] == b"\x89PNG"
-    assert explorer.ax.get_title()
-
-
-@pytest.mark.parametrize("name", FACTORIES)
-def test_moving_a_slider_calls_update(name):
-    values, _ = FACTORIES[name]
-    explorer = getattr(widgets, name)()
-    control, value = next(iter(values.items()))
-    before_png, before_state = explorer.view.value, explorer.state
-    explorer.controls[control].value = value
-    assert explorer.state is not before_state
-    assert explorer.view.value != before_png
-
-
-@pytest.mark.parametrize("name", FACTORIES)
-def test_redrawing_replaces_the_old_drawing(name):
-    explorer = getattr(widgets, name)()
-    axes = explorer.figure.axes
-
-    def counts():
-        return [(len(ax.lines), len(ax.collections), len(ax.texts), len(ax.patches)) for ax in axes]
-
-    explorer.update()
-    first = counts()
-    explorer.update()
-    assert counts() == first
-    assert len(explorer.figure.axes) == len(axes)
 
 
 # ---------------------------------------------------------------- basis conversion

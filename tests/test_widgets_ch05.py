@@ -4,7 +4,6 @@ import matplotlib
 
 matplotlib.use("Agg")
 
-import ipywidgets
 import numpy as np
 import pytest
 
@@ -17,10 +16,6 @@ from cagd_ref.widgets import ch05
 POLYGON = np.array([[0.0, 0.0], [1.0, 3.0], [3.0, 3.0], [4.0, 0.5]])
 FLAT = np.array([[0.0, 0.0], [1.5, 0.0], [3.0, 0.0], [4.0, 3.0]])  # three points on the x-axis, one high above
 
-FACTORIES = {
-    "blending_forms_explorer": ({"x1": 1.5}, {"points", "curves", "midpoints", "bezier_points", "hull_escape"}),
-    "variation_diminishing_explorer": ({"angle": 30.0}, {"line", "p", "c", "holds", "polygon_crossings", "curve_crossings"}),
-}
 
 
 def test_the_chapter_module_exports_its_factories():
@@ -28,44 +23,6 @@ def test_the_chapter_module_exports_its_factories():
         "blending_forms_explorer", "variation_diminishing_explorer", "BlendingFormsExplorer", "VariationDiminishingExplorer",
     }
     assert all(getattr(widgets, name) is getattr(ch05, name) for name in ch05.__all__)
-
-
-# ---------------------------------------------------------------- shared mechanism
-
-
-@pytest.mark.parametrize("name", FACTORIES)
-def test_every_explorer_updates_redraws_and_displays(name):
-    values, keys = FACTORIES[name]
-    explorer = getattr(widgets, name)()
-    before = explorer.view.value
-    assert before[:8] == b"\x89PNG\r\n\x1a\n"
-    state = explorer.update(**values)
-    assert keys <= set(state)
-    assert explorer.state is state and explorer.view.value != before
-    for key, value in values.items():
-        assert explorer.values[key] == pytest.approx(value)
-    assert isinstance(explorer.widget, ipywidgets.Box)
-    assert explorer._repr_mimebundle_()["image/png"][:4] == b"\x89PNG"
-    assert explorer.ax.get_title() and explorer.readout.value
-
-
-@pytest.mark.parametrize("name", FACTORIES)
-def test_redrawing_replaces_the_old_drawing(name):
-    explorer = getattr(widgets, name)()
-    counts = (len(explorer.ax.lines), len(explorer.ax.collections), len(explorer.ax.texts), len(explorer.ax.patches))
-    explorer.update()
-    explorer.update()
-    assert (len(explorer.ax.lines), len(explorer.ax.collections), len(explorer.ax.texts), len(explorer.ax.patches)) == counts
-
-
-@pytest.mark.parametrize("name", FACTORIES)
-def test_moving_a_control_calls_update(name):
-    values, _ = FACTORIES[name]
-    explorer = getattr(widgets, name)()
-    control, value = next(iter(values.items()))
-    before_png, before_state = explorer.view.value, explorer.state
-    explorer.controls[control].value = value
-    assert explorer.state is not before_state and explorer.view.value != before_png
 
 
 # ---------------------------------------------------------------- four forms on one polygon

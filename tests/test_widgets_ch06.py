@@ -4,7 +4,6 @@ import matplotlib
 
 matplotlib.use("Agg")
 
-import ipywidgets
 import numpy as np
 import pytest
 
@@ -15,53 +14,6 @@ from cagd_ref.knot_intervals import split_interval
 POINTS = np.array([[0.0, 0.0], [1.0, 2.0], [3.0, 3.0], [5.0, 1.0], [7.0, 1.0], [8.0, 3.0], [10.0, 3.5]])
 KNOTS = np.array([0.0, 0.0, 0.0, 1.0, 2.5, 3.0, 4.0, 4.0, 4.0])  # cubic, 7 points, non-uniform, Bézier ends
 
-FACTORIES = {
-    "knot_vector_editor": ({"u2": 2.5}, {"knots", "continuity", "segments", "basis"}),
-    "de_boor_explorer": ({"t": 3.3}, {"point", "levels", "span", "labels"}),
-    "knot_insertion_explorer": ({"t": 2.6}, {"points", "knots", "new", "deviation"}),
-    "knot_interval_explorer": ({"fraction": 0.5}, {"points", "intervals", "construction", "deviation"}),
-    "local_control_explorer": ({"dx": 1.0}, {"points", "segments", "changed", "support"}),
-}
-
-
-# ---------------------------------------------------------------- shared mechanism
-
-
-@pytest.mark.parametrize("name", FACTORIES)
-def test_every_explorer_updates_redraws_and_displays(name):
-    values, keys = FACTORIES[name]
-    explorer = getattr(widgets, name)()
-    before = explorer.view.value
-    state = explorer.update(**values)
-    assert keys <= set(state)
-    assert explorer.state is state
-    assert explorer.view.value != before and explorer.view.value[:4] == b"\x89PNG"
-    assert isinstance(explorer.widget, ipywidgets.Box)
-    assert explorer.ax.get_title()
-
-
-@pytest.mark.parametrize("name", FACTORIES)
-def test_redrawing_replaces_the_old_drawing(name):
-    explorer = getattr(widgets, name)()
-    axes = explorer.figure.axes
-
-    def counts():
-        return [(len(ax.lines), len(ax.collections), len(ax.texts)) for ax in axes]
-
-    first = counts()
-    explorer.update()
-    explorer.update()
-    assert counts() == first
-
-
-@pytest.mark.parametrize("name", FACTORIES)
-def test_moving_a_slider_calls_update(name):
-    values, _ = FACTORIES[name]
-    explorer = getattr(widgets, name)()
-    control, value = next(iter(values.items()))
-    before = explorer.state
-    explorer.controls[control].value = value
-    assert explorer.state is not before
 
 
 # ---------------------------------------------------------------- helpers
