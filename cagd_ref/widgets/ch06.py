@@ -373,15 +373,20 @@ def triangle_labels(knots, degree: int, span: int, t: float) -> list[list[str]]:
     return [[polar_label(sorted([t] * r + list(local[i + r : i + n]))) for i in range(n + 1 - r)] for r in range(n + 1)]
 
 
+def _spline_inputs(points, knots) -> tuple[np.ndarray, np.ndarray, int]:
+    """An explorer's planar control points (c, 2), knots (notes' convention) and degree; the chapter's cubic by default."""
+    pts = _control_points(points, CHAPTER_POINTS)
+    kn = CHAPTER_KNOTS.copy() if knots is None else as_float_array(knots, "knots")
+    return pts, kn, degree(pts, kn)
+
+
 class DeBoorExplorer(Explorer):
     """The de Boor triangle at t: the n+1 control points of t's span, every level of affine combinations, P(t). Notes §6.8."""
 
     figsize = (6.5, 4.8)
 
     def __init__(self, points=None, knots=None):
-        self.points = _control_points(points, CHAPTER_POINTS)
-        self.knots = CHAPTER_KNOTS.copy() if knots is None else as_float_array(knots, "knots")
-        self.degree = degree(self.points, self.knots)
+        self.points, self.knots, self.degree = _spline_inputs(points, knots)
         a, b = domain(self.knots, self.degree)
         t = _slider(widgets.FloatSlider, "t", min=a, max=b, step=0.01, value=round(0.4 * a + 0.6 * b, 2), readout_format=".2f")
         step = _slider(widgets.IntSlider, "levels", min=0, max=self.degree, value=self.degree)
@@ -447,9 +452,7 @@ class KnotInsertionExplorer(Explorer):
     figsize = (6.5, 4.8)
 
     def __init__(self, points=None, knots=None):
-        self.points = _control_points(points, CHAPTER_POINTS)
-        self.knots = CHAPTER_KNOTS.copy() if knots is None else as_float_array(knots, "knots")
-        self.degree = degree(self.points, self.knots)
+        self.points, self.knots, self.degree = _spline_inputs(points, knots)
         a, b = domain(self.knots, self.degree)
         self.check_ts = np.linspace(a, b, 97)
         self.curve = de_boor(self.points, self.knots, self.check_ts)
@@ -613,9 +616,7 @@ class LocalControlExplorer(Explorer):
     figsize = (6.5, 4.8)
 
     def __init__(self, points=None, knots=None):
-        self.points = _control_points(points, CHAPTER_POINTS)
-        self.knots = CHAPTER_KNOTS.copy() if knots is None else as_float_array(knots, "knots")
-        self.degree = degree(self.points, self.knots)
+        self.points, self.knots, self.degree = _spline_inputs(points, knots)
         self.segments = bezier_segments(self.points, self.knots)
         self.intervals = bezier_segment_intervals(self.knots, self.degree)
         controls = {
