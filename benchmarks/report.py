@@ -203,6 +203,13 @@ def _line(ax, xs, ys, label, style="-o", extrapolated=None):
             ax.plot(*zip(*marked), "o", markerfacecolor="white", color=ax.lines[-1].get_color(), markersize=6)
 
 
+def _timing_line(ax, xs, cases: list[Case], method: str, style: str = "-o") -> None:
+    """One method's best times over the given cases, extrapolated ones drawn open."""
+    measured = [c.get(method) for c in cases]
+    _line(ax, xs, [m.seconds if m else None for m in measured], method, style,
+          extrapolated=[bool(m and m.extrapolated_from) for m in measured])
+
+
 def figure(results: dict, found: list[Verdict], path: Path) -> None:
     import matplotlib
 
@@ -220,8 +227,7 @@ def figure(results: dict, found: list[Verdict], path: Path) -> None:
         chosen = [c for c in cases if c.params["values"] == size]
         degrees = [c.params["degree"] for c in chosen]
         for method in (BEZIER_EVALUATE, BEZIER_DE_CASTELJAU, BEZIER_PACKAGE, BEZIER_GEOMDL, BEZIER_MATRIX):
-            _line(ax, degrees, [c.get(method).seconds if c.get(method) else None for c in chosen], method,
-                  extrapolated=[bool(c.get(method) and c.get(method).extrapolated_from) for c in chosen])
+            _timing_line(ax, degrees, chosen, method)
         ax.set(title=f"Bézier evaluation, {format_count(size)} values (open: extrapolated)", xlabel="degree",
                ylabel="seconds", yscale="log", xticks=degrees)
 
@@ -234,8 +240,7 @@ def figure(results: dict, found: list[Verdict], path: Path) -> None:
         chosen = [c for c in cases if c.params["values"] == size and c.params["control points"] == count]
         degrees = [c.params["degree"] for c in chosen]
         for method in (DE_BOOR, SCIPY_BSPLINE, GEOMDL_BSPLINE):
-            _line(ax, degrees, [c.get(method).seconds if c.get(method) else None for c in chosen], method,
-                  extrapolated=[bool(c.get(method) and c.get(method).extrapolated_from) for c in chosen])
+            _timing_line(ax, degrees, chosen, method)
         ax.set(title=f"B-spline evaluation, {count} control points, {format_count(size)} values", xlabel="degree",
                ylabel="seconds", yscale="log", xticks=degrees)
 
@@ -247,8 +252,7 @@ def figure(results: dict, found: list[Verdict], path: Path) -> None:
             chosen = [c for c in cases if c.params["operation"] == operation]
             counts = [c.params["control points"] for c in chosen]
             for method in methods:
-                _line(ax, counts, [c.get(method).seconds if c.get(method) else None for c in chosen], method,
-                      "-o" if operation == "extraction" else "--s")
+                _timing_line(ax, counts, chosen, method, "-o" if operation == "extraction" else "--s")
         ax.set(title="Knot insertion (dashed), extraction (solid)", xlabel="control points",
                ylabel="seconds", xscale="log", yscale="log")
 
