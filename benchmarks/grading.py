@@ -18,11 +18,11 @@ import tempfile
 import time
 from pathlib import Path
 
-from cagd_ref.grading.classroom import grade_class, read_gradebook
-from cagd_ref.grading.runner import Limits
+from cagd_course.grading.classroom import grade_class, read_gradebook
+from cagd_course.grading.runner import Limits
 
 ROOT = Path(__file__).resolve().parent.parent
-SOLUTION = ROOT / "tests" / "fixtures" / "submissions" / "complete.ipynb"
+SOLUTION = ROOT / "tests" / "grading" / "fixtures" / "submissions" / "complete.ipynb"
 STUB = ROOT / "exercises" / "02-bezier-curves.ipynb"
 RESULTS = Path(__file__).parent / "results" / "grading.md"
 

@@ -3,7 +3,7 @@
 - Chapters are executed the way `cagd book` executes them (nbclient, a fresh
   kernel each, in the chapter's folder); the time includes starting the kernel,
   because a reader waits for that too.
-- Every explorer of `cagd_ref.widgets` is built with its defaults and then
+- Every explorer of `cagd_course.widgets` is built with its defaults and then
   one of its sliders is moved back and forth by a small step, through
   `update(**controls)` exactly as the slider's observer does. The median over
   the moves is reported, and next to it the median time of `compute` alone,
@@ -28,7 +28,7 @@ from .common import ROOT, Plan, progress
 
 CHAPTER_LIMIT = 30.0  # seconds
 WIDGET_LIMIT = 0.100  # seconds
-SUBMISSION = ROOT / "tests" / "fixtures" / "submissions" / "complete.ipynb"
+SUBMISSION = ROOT / "tests" / "grading" / "fixtures" / "submissions" / "complete.ipynb"
 
 
 @dataclass
@@ -64,7 +64,7 @@ class GradingTiming:
 def chapter_notebooks(plan: Plan) -> list[Path]:
     if plan.chapters is not None:
         return list(plan.chapters)
-    from cagd_ref.course import load_course
+    from cagd_course.manifest import load_course
 
     return [chapter.notebook for chapter in load_course(ROOT).chapters]
 
@@ -98,8 +98,8 @@ def chapter_timings(plan: Plan) -> list[ChapterTiming]:
 
 
 def explorer_factories() -> list[str]:
-    """Names of the functions in `cagd_ref.widgets` that build an explorer."""
-    from cagd_ref import widgets
+    """Names of the functions in `cagd_course.widgets` that build an explorer."""
+    from cagd_course import widgets
 
     return [name for name in widgets.__all__ if name.endswith(("_explorer", "_editor"))
             and callable(getattr(widgets, name)) and not isinstance(getattr(widgets, name), type)]
@@ -129,7 +129,7 @@ def _nudges(explorer) -> list[tuple[str, object, object]]:
 
 
 def time_widget(factory: str, updates: int) -> WidgetTiming:
-    from cagd_ref import widgets
+    from cagd_course import widgets
 
     start = time.perf_counter()
     explorer = getattr(widgets, factory)()
@@ -184,8 +184,8 @@ def widget_timings(plan: Plan) -> list[WidgetTiming]:
 def grading_timing(plan: Plan) -> GradingTiming | None:
     if plan.grade_runs < 1:
         return None
-    from cagd_ref.grading.classroom import grade_class, read_gradebook
-    from cagd_ref.grading.runner import Limits
+    from cagd_course.grading.classroom import grade_class, read_gradebook
+    from cagd_course.grading.runner import Limits
 
     times, row = [], None
     for _ in range(plan.grade_runs):

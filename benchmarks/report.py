@@ -9,8 +9,16 @@ from pathlib import Path
 import numpy as np
 
 from .common import Case, Measurement, format_count, format_seconds
-from .evaluation import (BEZIER_DE_CASTELJAU, BEZIER_EVALUATE, BEZIER_GEOMDL, BEZIER_MATRIX, BEZIER_PACKAGE, DE_BOOR,
-                         GEOMDL_BSPLINE, SCIPY_BSPLINE)
+from .evaluation import (
+    BEZIER_DE_CASTELJAU,
+    BEZIER_EVALUATE,
+    BEZIER_GEOMDL,
+    BEZIER_MATRIX,
+    BEZIER_PACKAGE,
+    DE_BOOR,
+    GEOMDL_BSPLINE,
+    SCIPY_BSPLINE,
+)
 from .health import CHAPTER_LIMIT, WIDGET_LIMIT
 from .knots import EXTRACT, GEOMDL_EXTRACT, GEOMDL_INSERT, INSERT, SCIPY_EXTRACT, SCIPY_INSERT
 from .rootfinding import BERNSTEIN, NUMPY_ROOTS, POLYNOMIAL_ROOTS

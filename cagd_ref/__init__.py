@@ -1,8 +1,24 @@
-"""cagd_ref: the reference implementation of the CAGD course (after T. W. Sederberg's notes).
+"""cagd_ref: the mathematics of the CAGD course, after T. W. Sederberg's course notes (BYU).
 
-One module per topic of the notes: `geometry` (ch. 1), `bezier` (ch. 2),
-`polynomials` (ch. 2-3), `continuity` (§2.10-2.11); `plotting` and `widgets`
-draw them, `grading` grades students' versions, `course` reads `book.toml`.
+One flat module per topic, in NumPy; import them by name (``from cagd_ref import
+bezier``). Control points are float arrays (n+1, d), rational curves live in
+homogeneous coordinates, B-spline knots follow the notes' convention. The
+drawings, explorers and grader of the course are in `cagd_course`; nothing here
+imports them. The modules, in the order of the course (module, chapters, topic):
+
+Part I. Curves
+
+    geometry              1        points, vectors, lines, planes, rotations, conics
+    bezier                2        Bézier curves: de Casteljau, subdivision, elevation, hodographs, rational curves
+    continuity            2        parametric and geometric continuity of joined curves, curvature combs
+    polynomials           2, 3     scalar polynomials in the power and Bernstein bases, conversions, products
+    forward_differencing  4        forward differencing: many evaluations for n additions each
+    blending              5        Timmer, Ball and Overhauser curves and their Bézier forms
+    blending_properties   5        which of the six properties a set of blending functions has
+    bspline               6        B-splines in polar form: de Boor, knot insertion, Bézier segments, basis
+    knot_intervals        6        B-splines labelled with knot intervals, splitting and closing them
+
+Part II. Intersections, offsets and roots
+
+    roots                 9        real roots of polynomials in Bernstein form by convex-hull clipping
 """
-
-__version__ = "0.1.0"

@@ -16,7 +16,7 @@ conversion to Bézier form are both derived from that table.
 
 from __future__ import annotations
 
-from typing import Callable
+from collections.abc import Callable
 
 import numpy as np
 

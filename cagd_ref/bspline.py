@@ -22,8 +22,8 @@ from math import comb
 
 import numpy as np
 
-from .bezier import hodograph as bezier_hodograph
 from ._validation import as_count, as_float_array, as_parameter, as_points, as_scalar
+from .bezier import hodograph as bezier_hodograph
 from .polynomials import BLOCK
 
 __all__ = [

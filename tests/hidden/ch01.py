@@ -9,8 +9,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from cagd_course.grading.suite import Case, Exercise, close, exact
 from cagd_ref import geometry
-from cagd_ref.grading.suite import Case, Exercise, close, exact
 
 NOTES = "notes example"
 EDGE = "edge cases"

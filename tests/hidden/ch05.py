@@ -11,8 +11,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from cagd_course.grading.suite import Case, Exercise, close
 from cagd_ref import blending
-from cagd_ref.grading.suite import Case, Exercise, close
 
 NOTES = "notes example"
 EDGE = "edge cases"

@@ -1,0 +1,202 @@
+"""The grading engine: extraction, the isolated worker, comparisons, scoring and the self-check."""
+
+import json
+
+import numpy as np
+import pytest
+
+from cagd_course.grading.engine import CaseResult, grade_statements, prepare, score, submission_seed
+from cagd_course.grading.extract import SubmissionError, extract_notebook, extract_source
+from cagd_course.grading.report import check_text
+from cagd_course.grading.runner import Limits
+from cagd_course.grading.suite import Case, Exercise, Raises, close, exact
+from cagd_course.grading.worker import Unsupported, decode, encode
+from cagd_ref import bezier
+
+FAST = Limits(exercise_seconds=3, submission_seconds=20, memory_mb=1024)
+
+
+def _casteljau_cases(rng):
+    points = rng.normal(size=(4, 2))
+    return [
+        Case("notes example", ([[0, 0], [1, 2], [3, 2]], 0.3), visible=True),
+        Case("array t", (points, np.linspace(0, 1, 5))),
+        Case("bad input", ([1.0, 2.0, 3.0], 0.5)),
+    ]
+
+
+EXERCISES = {
+    "02.de_casteljau": (Exercise("02.de_casteljau", bezier.de_casteljau, _casteljau_cases, hint="interpolate"), 3.0),
+    "02.elevate": (
+        Exercise("02.elevate", bezier.elevate, lambda rng: [Case("cubic", (np.array([[0.0, 0], [1, 2], [3, 2], [4, 0]]),))]),
+        2.0,
+    ),
+}
+
+GOOD = '''
+import numpy as np
+
+def de_casteljau(points, t):
+    p = np.array(points, dtype=float)
+    if p.ndim != 2:
+        raise ValueError("points must be (n+1, d)")
+    ts = np.atleast_1d(np.asarray(t, dtype=float))[:, None, None]
+    level = np.broadcast_to(p, (ts.shape[0],) + p.shape)
+    while level.shape[1] > 1:
+        level = (1 - ts) * level[:, :-1] + ts * level[:, 1:]
+    return level[0, 0] if np.ndim(t) == 0 else level[:, 0]
+
+def elevate(points):
+    p = np.array(points, dtype=float)
+    n = len(p) - 1
+    a = (np.arange(n + 2) / (n + 1))[:, None]
+    return a * np.vstack([p[:1], p]) + (1 - a) * np.vstack([p, p[-1:]])
+'''
+
+
+def _grade(source, exercises=EXERCISES, seed=1, limits=FAST):
+    return grade_statements(extract_source([source]).statements, prepare(exercises, seed), limits)
+
+
+def test_extraction_keeps_top_level_defs_and_imports_wherever_they_stand():
+    cells = [
+        "print('hi')\nx = 3",
+        "%matplotlib inline\nimport numpy as np\ndef f(a):\n    return a\nf(2)",
+        "def broken(:\n    pass",
+        "from cagd_ref.bezier import de_casteljau\n@staticmethod\ndef g():\n    pass",
+        "def f(a):\n    return 2 * a",
+    ]
+    submission = extract_source(cells)
+    sources = [s["source"] for s in submission.statements]
+    assert sources == ["import numpy as np", "def f(a):\n    return a", "@staticmethod\ndef g():\n    pass", "def f(a):\n    return 2 * a"]
+    assert len(submission.skipped) == 2
+    assert "does not parse" in submission.skipped[0] and "cagd_ref" in submission.skipped[1]
+
+
+@pytest.mark.parametrize(
+    "content, status",
+    [
+        (b"{not json", "invalid notebook (not valid JSON)"),
+        (b'{"cells": 3}', "invalid notebook (no list of cells)"),
+        (json.dumps({"cells": [{"cell_type": "markdown", "source": "hi"}]}).encode(), "no code"),
+        (json.dumps({"cells": [{"cell_type": "code", "source": ["x = 1\n", "print(x)"]}]}).encode(), "nothing defined"),
+    ],
+)
+def test_unreadable_notebooks_are_reported_with_a_plain_status(tmp_path, content, status):
+    path = tmp_path / "sub.ipynb"
+    path.write_bytes(content)
+    with pytest.raises(SubmissionError) as info:
+        extract_notebook(path)
+    assert info.value.status == status
+
+
+def test_codec_round_trips_arrays_tuples_and_special_floats():
+    value = (np.arange(6.0).reshape(2, 3), [1, "a", None, float("nan")], {"k": np.float64(2.5)}, np.array([True, False]))
+    back = decode(json.loads(json.dumps(encode(value))))
+    assert isinstance(back, tuple) and np.array_equal(back[0], value[0]) and back[0].shape == (2, 3)
+    assert back[1][:3] == [1, "a", None] and np.isnan(back[1][3])
+    assert back[2] == {"k": 2.5} and back[3].dtype == bool
+    assert isinstance(decode(encode(object())), Unsupported)
+
+
+def test_a_correct_submission_gets_full_marks():
+    outcome = _grade(GOOD)
+    assert outcome.score == outcome.max_score == 5.0
+    assert all(r.passed for r in outcome.exercises)
+
+
+def test_the_reference_itself_passes_in_a_trusted_worker():
+    statements = [{"source": "from cagd_ref.bezier import de_casteljau, elevate", "where": "reference"}]
+    outcome = grade_statements(statements, prepare(EXERCISES, 0), FAST, allow_reference=True)
+    assert outcome.score == 5.0
+
+
+@pytest.mark.parametrize(
+    "source",
+    [
+        "from cagd_ref.bezier import de_casteljau",
+        "import importlib\ndef de_casteljau(p, t):\n    return importlib.import_module('cagd_ref.bezier').de_casteljau(p, t)",
+        "def de_casteljau(p, t):\n    return __import__('cagd_ref.bezier', fromlist=['x']).de_casteljau(p, t)",
+    ],
+)
+def test_the_reference_cannot_be_imported_by_graded_code(source):
+    outcome = _grade(source, {"02.de_casteljau": EXERCISES["02.de_casteljau"]})
+    assert outcome.score == 0
+
+
+def test_a_stub_scores_zero_and_the_check_says_to_write_it():
+    outcome = _grade("def de_casteljau(points, t):\n    raise NotImplementedError('write me')")
+    assert outcome.score == 0
+    text = check_text(outcome.exercises[0])
+    assert "Not written yet" in text and "0 / 3 points" in text
+
+
+def test_wrong_values_show_the_first_failing_visible_case():
+    source = GOOD.replace("(1 - ts) * level[:, :-1] + ts * level[:, 1:]", "ts * level[:, :-1] + (1 - ts) * level[:, 1:]")
+    result = _grade(source).exercises[0]
+    text = check_text(result)
+    assert "[FAIL] notes example" in text and "expected:" in text and "received:" in text
+    assert 0 < result.score < 3
+
+
+def test_an_endless_loop_is_stopped_and_the_next_exercise_still_runs():
+    source = GOOD.replace("def de_casteljau(points, t):\n", "def de_casteljau(points, t):\n    while True:\n        pass\n", 1)
+    outcome = _grade(source)
+    first, second = outcome.exercises
+    assert first.score == 0 and first.stopped.startswith("timed out")
+    assert second.score == second.points
+
+
+def test_a_hard_exit_costs_only_the_exercise_it_happens_in():
+    source = GOOD.replace("    p = np.array(points, dtype=float)\n    n = len(p) - 1", "    import os\n    os._exit(7)", 1)
+    outcome = _grade(source)
+    first, second = outcome.exercises
+    assert first.score == 3 and second.score == 0
+    assert second.stopped == "the process exited with code 7 before finishing"
+
+
+def test_modifying_an_input_in_place_fails_the_case():
+    source = GOOD.replace("    p = np.array(points, dtype=float)\n    n = len(p) - 1", "    p = np.array(points, dtype=float)\n    points[1, 1] = 99\n    n = len(p) - 1", 1)
+    result = _grade(source).exercises[1]
+    assert result.score == 0 and "modified its input" in result.cases[0].message
+
+
+def test_bad_input_cases_demand_a_value_or_type_error():
+    compare = close()
+    assert compare(Raises("ValueError", "x"), Raises("TypeError", "y")) is None
+    assert "NotImplementedError" in compare(Raises("ValueError", "x"), Raises("NotImplementedError", ""))
+    assert "returned" in compare(Raises("ValueError", "x"), np.zeros(2))
+
+
+@pytest.mark.parametrize(
+    "expected, received, fragment",
+    [
+        (np.zeros((2, 3)), np.zeros((3, 2)), "expected shape (2, 3)"),
+        (np.ones(3), [1.0, 1.0, float("nan")], "NaN"),
+        (np.ones(3), None, "got NoneType"),
+        ((np.ones(2), np.ones(2)), np.ones(2), "tuple of 2"),
+        (np.ones(2), np.array([1.0, 1.5]), "expected 1.0, got 1.5"),
+    ],
+)
+def test_comparison_messages_say_what_is_wrong(expected, received, fragment):
+    assert fragment in close()(expected, received)
+
+
+def test_lists_are_accepted_where_arrays_are_expected_and_strings_compare_exactly():
+    assert close()(np.array([[1.0, 2.0]]), [[1.0, 2.0]]) is None
+    assert exact()("ellipse", "ellipse") is None and exact()("ellipse", "Ellipse")
+
+
+def test_score_is_the_mean_over_categories_of_the_fraction_passed():
+    cases = [CaseResult("a", False, True), CaseResult("a", False, False), CaseResult("b", False, True)]
+    assert score(cases, 4.0) == pytest.approx(4.0 * (0.5 + 1.0) / 2)
+
+
+def test_seeds_depend_on_the_run_seed_and_the_submission_name_only():
+    assert submission_seed(0, "ann") == submission_seed(0, "ann")
+    assert len({submission_seed(0, "ann"), submission_seed(1, "ann"), submission_seed(0, "bob")}) == 3
+
+
+def test_the_worker_reports_its_file_system_confinement():
+    outcome = _grade(GOOD)
+    assert "landlock ABI" in outcome.run.sandbox, outcome.run.sandbox

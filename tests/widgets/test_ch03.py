@@ -1,0 +1,160 @@
+"""cagd_course.widgets.ch03: the basis-conversion and evaluation-cost explorers, driven without a browser."""
+
+import matplotlib
+
+matplotlib.use("Agg")
+
+import numpy as np
+import numpy.polynomial.polynomial as npp
+import pytest
+from matplotlib.figure import Figure
+
+from cagd_course import widgets
+from cagd_course.widgets import ch03
+from cagd_ref.bezier import de_casteljau
+from cagd_ref.polynomials import evaluation_cost
+
+# The notes' rational cubic, one homogeneous coordinate at a time: Bernstein row -> power column.
+NOTES_COLUMNS = {
+    "X": ([1.0, 9.0, 4.0, 6.0], [1.0, 24.0, -39.0, 20.0]),
+    "Y": ([2.0, 12.0, 3.0, 2.0], [2.0, 30.0, -57.0, 27.0]),
+    "W": ([1.0, 3.0, 1.0, 2.0], [1.0, 6.0, -12.0, 7.0]),
+}
+
+
+
+def test_module_exports_what_the_tests_cover():
+    assert set(ch03.__all__) == {
+        "basis_conversion_explorer", "evaluation_cost_explorer", "draw_difference_table", "difference_table_html",
+        "power_text",
+        "BasisConversionExplorer", "EvaluationCostExplorer",
+    }
+    assert set(ch03.__all__) <= set(widgets.__all__)
+
+
+# ---------------------------------------------------------------- basis conversion
+
+
+def test_basis_conversion_of_the_notes_columns():
+    explorer = widgets.basis_conversion_explorer()
+    for bernstein, power in NOTES_COLUMNS.values():
+        state = explorer.update(**{f"b{i}": b for i, b in enumerate(bernstein)})
+        np.testing.assert_allclose(state["power"], power, atol=1e-12)
+        assert [row[0] for row in state["table"]] == pytest.approx(np.array(power) / [1, 3, 3, 1])
+        np.testing.assert_allclose(state["bernstein_values"], state["power_values"], atol=1e-12)
+        np.testing.assert_allclose(state["power_values"], npp.polyval(state["t"], power), atol=1e-12)
+
+
+def test_basis_conversion_default_is_the_notes_weights_and_sliders_move_it():
+    explorer = widgets.basis_conversion_explorer()
+    assert list(explorer.controls) == ["b0", "b1", "b2", "b3"]
+    np.testing.assert_allclose(explorer.state["power"], NOTES_COLUMNS["W"][1])
+    assert explorer.state["text"] == "1 + 6t − 12t² + 7t³"
+    state = explorer.update(b0=1, b1=9, b2=4, b3=6)
+    np.testing.assert_allclose(state["power"], NOTES_COLUMNS["X"][1])
+    # The drawn curve is the explicit Bézier curve with control points (i/3, b_i).
+    control = np.column_stack([np.arange(4) / 3, state["bernstein"]])
+    np.testing.assert_allclose(np.column_stack([state["t"], state["bernstein_values"]]),
+                               de_casteljau(control, state["t"]), atol=1e-12)
+    assert "24t" in explorer.readout.value
+
+
+def test_basis_conversion_table_is_shown_in_the_readout():
+    explorer = widgets.basis_conversion_explorer()
+    assert len(explorer.figure.axes) == 1 and explorer.ax.get_legend() is None
+    readout = explorer.readout.value
+    # The notes' weights: top row 1, 3, 1, 2; left column 1, 2, -4, 3; power 1, 6, -12, 7.
+    for entry in (">7<", ">-4<", ">-12<", "← ×3", "Δ³"):
+        assert entry in readout
+    explorer.update(b3=-2.5)
+    assert ">-2.5<" in explorer.readout.value
+
+
+def test_difference_table_html_matches_the_drawn_table():
+    html_table = widgets.difference_table_html([0.0, 1.0, 4.0])
+    assert html_table.count("<tr>") == 4  # header and three rows
+    assert ">4<" in html_table and "← ×2" in html_table and "Δ²" in html_table
+
+
+@pytest.mark.parametrize("bad, error", [
+    ([1.0], ValueError),                       # degree 0: nothing to convert
+    (np.ones(8), ValueError),                  # beyond the sliders' degree 6
+    ([[1.0, 2.0], [3.0, 4.0]], ValueError),    # one polynomial only
+    ([0.0, 16.0], ValueError),                 # outside the sliders' range
+    ("abc", TypeError),
+])
+def test_basis_conversion_rejects_bad_coefficients(bad, error):
+    with pytest.raises(error, match="^coeffs"):
+        widgets.basis_conversion_explorer(bad)
+
+
+def test_basis_conversion_leaves_the_callers_array_alone_and_rejects_bad_slider_values():
+    coeffs = np.array([1.0, -2.0, 3.0])
+    explorer = widgets.basis_conversion_explorer(coeffs)
+    explorer.update(b0=5.0)
+    assert coeffs.tolist() == [1.0, -2.0, 3.0]
+    with pytest.raises(ValueError, match="b1"):
+        explorer.update(b1=20.0)
+    with pytest.raises(TypeError, match="b5"):
+        explorer.update(b5=1.0)
+    assert explorer.values["b1"] == -2.0
+
+
+# ---------------------------------------------------------------- helpers
+
+
+@pytest.mark.parametrize("coeffs, text", [
+    ([1, 6, -12, 7], "1 + 6t − 12t² + 7t³"),
+    ([0, -1, 0, 0, 2.5], "−t + 2.5t⁴"),
+    ([-3, 1, 1], "−3 + t + t²"),
+    ([0.0, 0.0], "0"),
+    ([1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 4], "1 + 4t¹¹"),
+])
+def test_power_text(coeffs, text):
+    assert widgets.power_text(coeffs) == text
+    assert widgets.power_text(coeffs, "u") == text.replace("t", "u")
+
+
+def test_power_text_rejects_columns():
+    with pytest.raises(ValueError, match="coeffs"):
+        widgets.power_text([[1, 2], [3, 4]])
+
+
+def test_draw_difference_table_of_homogeneous_rows():
+    figure = Figure(figsize=(9, 3))
+    ax = figure.add_subplot()
+    rows = np.array([[1, 2, 1], [9, 12, 3], [4, 3, 1], [6, 2, 2]])
+    assert widgets.draw_difference_table(ax, rows) is ax
+    texts = [t.get_text() for t in ax.texts]
+    for entry in ["(1, 2, 1)", "(8, 10, 2)", "(-13, -19, -4)", "(20, 27, 7)", "(24, 30, 6)", "(-39, -57, -12)"]:
+        assert entry in texts
+    assert not ax.axison
+    bare = Figure().add_subplot()
+    widgets.draw_difference_table(bare, [2.0, 5.0], power=False, fontsize=9)
+    assert sorted(t.get_text() for t in bare.texts) == sorted(["2", "5", "3", "Δ⁰", "Δ¹", "$b_i$ (Bernstein)"])
+    assert {t.get_fontsize() for t in bare.texts} <= {9, 10}
+
+
+# ---------------------------------------------------------------- evaluation cost
+
+
+def test_evaluation_cost_explorer_reports_the_counts():
+    explorer = widgets.evaluation_cost_explorer()
+    for degree in (1, 3, 10, 30):
+        state = explorer.update(degree=degree)
+        assert state["costs"] == evaluation_cost(degree)
+        for method, totals in state["totals"].items():
+            assert totals[degree] == sum(evaluation_cost(degree)[method])
+            assert len(totals) == 31
+        assert f"<td>{degree}</td><td>{degree}</td>" in explorer.readout.value  # Horner: n and n
+
+
+def test_evaluation_cost_explorer_range_and_bad_values():
+    explorer = widgets.evaluation_cost_explorer(max_degree=12)
+    assert explorer.controls["degree"].max == 12
+    with pytest.raises(ValueError, match="degree"):
+        explorer.update(degree=13)
+    with pytest.raises(TypeError, match="degree"):
+        explorer.update(degree=2.5)
+    with pytest.raises(ValueError, match="max_degree"):
+        widgets.evaluation_cost_explorer(max_degree=0)
