@@ -11,7 +11,7 @@ Part I. Curves
     geometry              1        points, vectors, lines, planes, rotations, conics
     bezier                2        Bézier curves: de Casteljau, subdivision, elevation, hodographs, rational curves
     continuity            2        parametric and geometric continuity of joined curves, curvature combs
-    polynomials           2, 3     scalar polynomials in the power and Bernstein bases, conversions, products
+    polynomials           2, 3, 9  scalar polynomials in the power and Bernstein bases, conversions, products
     forward_differencing  4        forward differencing: many evaluations for n additions each
     blending              5        Timmer, Ball and Overhauser curves and their Bézier forms
     blending_properties   5        which of the six properties a set of blending functions has
@@ -20,5 +20,11 @@ Part I. Curves
 
 Part II. Intersections, offsets and roots
 
-    roots                 9        real roots of polynomials in Bernstein form by convex-hull clipping
+    intersection          7        intersections of lines and curves: Bézout, substitution, subdivision, Bézier clipping
+    offsets               8        offset curves, their cusps, Pythagorean-hodograph curves and their exact offsets
+    roots                 9        real roots of polynomials in Bernstein form: hull marching, deflation, clipping
+
+Part III. Interpolation and approximation
+
+    interpolation         10       Lagrange, Newton and Neville interpolation, Chebyshev nodes, Hermite curves
 """

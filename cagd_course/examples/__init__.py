@@ -76,6 +76,24 @@ class NotesExample:
         return tuple(np.copy(self.inputs[name]) if isinstance(self.inputs[name], np.ndarray) else self.inputs[name]
                      for name in names)
 
+    def _repr_markdown_(self) -> str:
+        """How a notebook shows the example: where it is, what goes in, what the notes state, what they got wrong."""
+        lines = [f"**Notes §{self.section}**: {self.summary}", ""]
+        rows = [("input", k, v) for k, v in self.inputs.items()] + [("result", k, v) for k, v in self.results.items()]
+        if rows:
+            lines += ["| | name | value |", "|---|---|---|"]
+            lines += [f"| {kind} | `{name}` | `{_shown(value)}` |" for kind, name, value in rows]
+        for name, erratum in self.errata.items():
+            lines += ["", f"*Erratum* `{name}`: the notes print `{_shown(erratum.notes)}`, "
+                          f"the correct value is `{_shown(erratum.correct)}` ({erratum.why})."]
+        return "\n".join(lines)
+
+
+def _shown(value) -> str:
+    if isinstance(value, np.ndarray):
+        return np.array2string(value, precision=6, suppress_small=True, separator=", ").replace("\n", " ")
+    return f"{value:.6g}" if isinstance(value, float) else str(value)
+
 
 def _arithmetic(node):
     if isinstance(node, ast.Constant) and isinstance(node.value, (int, float)) and not isinstance(node.value, bool):

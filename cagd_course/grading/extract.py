@@ -58,9 +58,13 @@ def _course_package(node: ast.stmt) -> str | None:
     return next((name.partition(".")[0] for name in names if name.partition(".")[0] in PACKAGES), None)
 
 
-def _is_self_check_import(node: ast.stmt) -> bool:
-    """The exercise notebooks' own `from cagd_course import check`."""
-    return isinstance(node, ast.ImportFrom) and node.module == "cagd_course" and [a.name for a in node.names] == ["check"]
+# What the exercise notebooks themselves import from the course: the self-check and the notes' examples.
+NOTEBOOK_IMPORTS = {"cagd_course": {"check"}, "cagd_course.examples": {"notes_example", "notes_examples"}}
+
+
+def _is_notebook_import(node: ast.stmt) -> bool:
+    """An import the exercise notebooks make themselves (dropped without a note, like every course import)."""
+    return isinstance(node, ast.ImportFrom) and {a.name for a in node.names} <= NOTEBOOK_IMPORTS.get(node.module, set())
 
 
 def _without_magics(source: str) -> str:
@@ -84,7 +88,7 @@ def extract_source(cells: list[str]) -> Submission:
                 continue
             package = _course_package(node)
             if package is not None:
-                if not _is_self_check_import(node):
+                if not _is_notebook_import(node):
                     skipped.append(f"code cell {number}: importing {package} is not allowed in graded code; ignored")
                 continue
             start = min([node.lineno] + [d.lineno for d in getattr(node, "decorator_list", [])])
