@@ -32,9 +32,13 @@ def make_class(folder: Path, copies: int) -> None:
     solution = SOLUTION.read_text()
     kinds = {
         "correct": solution,
-        "partly_wrong": solution.replace("(1 - t) * levels[-1][:-1] + t * levels[-1][1:]", "t * levels[-1][:-1] + (1 - t) * levels[-1][1:]"),
+        "partly_wrong": solution.replace(
+            "(1 - t) * levels[-1][:-1] + t * levels[-1][1:]", "t * levels[-1][:-1] + (1 - t) * levels[-1][1:]"
+        ),
         "stub": STUB.read_text(),
-        "looping": solution.replace("def de_casteljau(points, t):\\n", "def de_casteljau(points, t):\\n    while True:\\n        pass\\n", 1),
+        "looping": solution.replace(
+            "def de_casteljau(points, t):\\n", "def de_casteljau(points, t):\\n    while True:\\n        pass\\n", 1
+        ),
     }
     assert kinds["partly_wrong"] != solution and kinds["looping"] != solution
     names = list(kinds)
@@ -77,7 +81,9 @@ def main() -> None:
         f"Machine: {platform.machine()}, Python {platform.python_version()}; per-exercise limit {args.timeout:g} s.",
         f"Class: {args.copies} notebooks cycling correct / partly wrong / stub / endless loop in `de_casteljau`;",
         "every notebook graded on the 15 exercises of chapters 1-2 (`--chapter 1 --chapter 2`).",
-        "Command: `.venv/bin/python benchmarks/grading.py" + (f" --copies {args.copies}" if args.copies != 300 else "") + "`",
+        "Command: `.venv/bin/python benchmarks/grading.py"
+        + (f" --copies {args.copies}" if args.copies != 300 else "")
+        + "`",
         "",
         f"One correct submission of chapters 1-2, graded alone: **{single:.2f} s** (target: under 5 s).",
         "",

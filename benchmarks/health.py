@@ -89,7 +89,10 @@ def chapter_timings(plan: Plan) -> list[ChapterTiming]:
     results = []
     for path in chapter_notebooks(plan):
         result = time_chapter(path)
-        progress(f"[chapters] {result.notebook}: {result.seconds:.1f} s" + (f" FAILED {result.error}" if result.error else ""))
+        progress(
+            f"[chapters] {result.notebook}: {result.seconds:.1f} s"
+            + (f" FAILED {result.error}" if result.error else "")
+        )
         results.append(result)
     return results
 
@@ -101,8 +104,13 @@ def explorer_factories() -> list[str]:
     """Names of the functions in `cagd_course.widgets` that build an explorer."""
     from cagd_course import widgets
 
-    return [name for name in widgets.__all__ if name.endswith(("_explorer", "_editor"))
-            and callable(getattr(widgets, name)) and not isinstance(getattr(widgets, name), type)]
+    return [
+        name
+        for name in widgets.__all__
+        if name.endswith(("_explorer", "_editor"))
+        and callable(getattr(widgets, name))
+        and not isinstance(getattr(widgets, name), type)
+    ]
 
 
 def _nudges(explorer) -> list[tuple[str, object, object]]:
@@ -156,8 +164,15 @@ def time_widget(factory: str, updates: int) -> WidgetTiming:
         start = time.perf_counter()
         explorer.png()
         render_times.append(time.perf_counter() - start)
-    return WidgetTiming(factory, control or "(no slider)", build, statistics.median(update_times),
-                        statistics.median(compute_times), statistics.median(render_times), updates)
+    return WidgetTiming(
+        factory,
+        control or "(no slider)",
+        build,
+        statistics.median(update_times),
+        statistics.median(compute_times),
+        statistics.median(render_times),
+        updates,
+    )
 
 
 def widget_timings(plan: Plan) -> list[WidgetTiming]:
@@ -171,9 +186,11 @@ def widget_timings(plan: Plan) -> list[WidgetTiming]:
         except Exception as err:  # a broken explorer is reported, and the benchmark goes on
             nan = float("nan")
             result = WidgetTiming(factory, "", 0.0, nan, nan, nan, 0, f"{type(err).__name__}: {err}"[:200])
-        progress(f"[widgets] {factory}: update {result.update * 1e3:.1f} ms median (compute "
-                 f"{result.compute * 1e3:.2f} ms, PNG {result.render * 1e3:.1f} ms)"
-                 + (f" FAILED {result.error}" if result.error else ""))
+        progress(
+            f"[widgets] {factory}: update {result.update * 1e3:.1f} ms median (compute "
+            f"{result.compute * 1e3:.2f} ms, PNG {result.render * 1e3:.1f} ms)"
+            + (f" FAILED {result.error}" if result.error else "")
+        )
         results.append(result)
     return results
 

@@ -40,14 +40,20 @@ def knot_cases(plan: Plan) -> list[Case]:
         geomdl = peers.geomdl_curve(points, full_knots, n) if peers.available("geomdl") else None
         operations = {
             "insertion": (
-                INSERT, lambda: insert_knot(points, knots, INSERTED)[0],
-                SCIPY_INSERT, lambda: peers.scipy_insert(scipy, INSERTED),
-                GEOMDL_INSERT, Candidate(lambda copy: peers.geomdl_insert(copy, INSERTED), lambda: peers.fresh_copy(geomdl)),
+                INSERT,
+                lambda: insert_knot(points, knots, INSERTED)[0],
+                SCIPY_INSERT,
+                lambda: peers.scipy_insert(scipy, INSERTED),
+                GEOMDL_INSERT,
+                Candidate(lambda copy: peers.geomdl_insert(copy, INSERTED), lambda: peers.fresh_copy(geomdl)),
             ),
             "extraction": (
-                EXTRACT, lambda: bezier_segments(points, knots),
-                SCIPY_EXTRACT, lambda: peers.scipy_bezier_segments(scipy),
-                GEOMDL_EXTRACT, lambda: peers.geomdl_bezier_segments(geomdl),
+                EXTRACT,
+                lambda: bezier_segments(points, knots),
+                SCIPY_EXTRACT,
+                lambda: peers.scipy_bezier_segments(scipy),
+                GEOMDL_EXTRACT,
+                lambda: peers.geomdl_bezier_segments(geomdl),
             ),
         }
         for operation, (ours, run, scipy_name, scipy_run, geomdl_name, geomdl_run) in operations.items():

@@ -74,10 +74,26 @@ def _verdicts(found: list[Verdict]) -> list[str]:
 
 def _bezier(cases: list[Case]) -> list[str]:
     methods = [BEZIER_EVALUATE, BEZIER_DE_CASTELJAU, BEZIER_PACKAGE, BEZIER_GEOMDL, BEZIER_MATRIX]
-    rows = [[str(c.params["degree"]), format_count(c.params["values"])] + [_cell(c.get(m), m != BEZIER_EVALUATE) for m in methods]
-            + [_difference(c, methods[1:]), _samples(c, methods)] for c in cases]
-    return _table(["degree", "values", "`evaluate`", "`de_casteljau`", "`bezier` evaluate_multi", "geomdl",
-                   "NumPy Bernstein matrix", "max abs difference to `evaluate`", "samples"], rows)
+    rows = [
+        [str(c.params["degree"]), format_count(c.params["values"])]
+        + [_cell(c.get(m), m != BEZIER_EVALUATE) for m in methods]
+        + [_difference(c, methods[1:]), _samples(c, methods)]
+        for c in cases
+    ]
+    return _table(
+        [
+            "degree",
+            "values",
+            "`evaluate`",
+            "`de_casteljau`",
+            "`bezier` evaluate_multi",
+            "geomdl",
+            "NumPy Bernstein matrix",
+            "max abs difference to `evaluate`",
+            "samples",
+        ],
+        rows,
+    )
 
 
 def _bspline(cases: list[Case]) -> list[str]:
@@ -86,21 +102,40 @@ def _bspline(cases: list[Case]) -> list[str]:
     for c in cases:
         scipy = c.get(SCIPY_BSPLINE)
         versus = f"{c.get(DE_BOOR).seconds / scipy.seconds:.2f}" if scipy and scipy.seconds else "—"
-        rows.append([str(c.params["degree"]), str(c.params["control points"]), format_count(c.params["values"])]
-                    + [_cell(c.get(m), m != DE_BOOR) for m in methods]
-                    + [versus, _difference(c, methods[1:]), _samples(c, methods)])
-    return _table(["degree", "control points", "values", "`de_boor`", "SciPy `BSpline`", "geomdl",
-                   "`de_boor` / SciPy", "max abs difference to `de_boor`", "samples"], rows)
+        rows.append(
+            [str(c.params["degree"]), str(c.params["control points"]), format_count(c.params["values"])]
+            + [_cell(c.get(m), m != DE_BOOR) for m in methods]
+            + [versus, _difference(c, methods[1:]), _samples(c, methods)]
+        )
+    return _table(
+        [
+            "degree",
+            "control points",
+            "values",
+            "`de_boor`",
+            "SciPy `BSpline`",
+            "geomdl",
+            "`de_boor` / SciPy",
+            "max abs difference to `de_boor`",
+            "samples",
+        ],
+        rows,
+    )
 
 
 def _knots(cases: list[Case]) -> list[str]:
     rows = []
     for c in cases:
-        methods = ((INSERT, SCIPY_INSERT, GEOMDL_INSERT) if c.params["operation"] == "insertion"
-                   else (EXTRACT, SCIPY_EXTRACT, GEOMDL_EXTRACT))
-        rows.append([c.params["operation"], str(c.params["control points"])]
-                    + [_cell(c.get(m), m != methods[0]) for m in methods]
-                    + [_difference(c, list(methods[1:])), _samples(c, list(methods))])
+        methods = (
+            (INSERT, SCIPY_INSERT, GEOMDL_INSERT)
+            if c.params["operation"] == "insertion"
+            else (EXTRACT, SCIPY_EXTRACT, GEOMDL_EXTRACT)
+        )
+        rows.append(
+            [c.params["operation"], str(c.params["control points"])]
+            + [_cell(c.get(m), m != methods[0]) for m in methods]
+            + [_difference(c, list(methods[1:])), _samples(c, list(methods))]
+        )
     return _table(["operation", "control points", "cagd_ref", "SciPy", "geomdl", "max abs difference", "samples"], rows)
 
 
@@ -109,11 +144,26 @@ def _roots(cases: list[Case]) -> list[str]:
     rows = []
     for c in cases:
         errors = [f"{c.get(m).difference:.1e}" + (f" ({c.get(m).note})" if c.get(m).note else "") for m in methods]
-        rows.append([str(c.params["degree"])] + [_cell(c.get(m), m != BERNSTEIN) for m in methods] + errors
-                    + [f"{c.extra['error ratio']:.1e}", _samples(c, methods)])
-    return _table(["degree", "`bernstein_roots`", "`numpy.roots`", "`Polynomial.roots`", "error Bernstein",
-                   "error `numpy.roots`", "error `Polynomial.roots`", "error ratio numpy.roots / Bernstein",
-                   "samples"], rows)
+        rows.append(
+            [str(c.params["degree"])]
+            + [_cell(c.get(m), m != BERNSTEIN) for m in methods]
+            + errors
+            + [f"{c.extra['error ratio']:.1e}", _samples(c, methods)]
+        )
+    return _table(
+        [
+            "degree",
+            "`bernstein_roots`",
+            "`numpy.roots`",
+            "`Polynomial.roots`",
+            "error Bernstein",
+            "error `numpy.roots`",
+            "error `Polynomial.roots`",
+            "error ratio numpy.roots / Bernstein",
+            "samples",
+        ],
+        rows,
+    )
 
 
 def _health(results: dict) -> list[str]:
@@ -121,25 +171,50 @@ def _health(results: dict) -> list[str]:
     chapters = results.get("chapters", [])
     if chapters:
         lines += ["", "**Chapters** (`nbclient`, fresh kernel, kernel start included; limit 30 s):", ""]
-        lines += _table(["notebook", "seconds", "under 30 s"],
-                        [[c.notebook, f"{c.seconds:.1f}", ("yes" if c.seconds < CHAPTER_LIMIT else "**no**")
-                          + (f" — failed: {c.error}" if c.error else "")] for c in chapters])
+        lines += _table(
+            ["notebook", "seconds", "under 30 s"],
+            [
+                [
+                    c.notebook,
+                    f"{c.seconds:.1f}",
+                    ("yes" if c.seconds < CHAPTER_LIMIT else "**no**") + (f" — failed: {c.error}" if c.error else ""),
+                ]
+                for c in chapters
+            ],
+        )
     widgets = results.get("widgets", [])
     if widgets:
-        lines += ["", "**Widgets** (median over the slider moves of `update(**controls)`, limit 100 ms; of it, "
-                  "`compute` is the `cagd_ref` part and `png()` matplotlib's rendering and PNG encoding, each timed "
-                  "on its own after the update; the rest is creating the artists):", ""]
-        lines += _table(["explorer", "slider moved", "update (median)", "compute", "png()", "build", "moves",
-                         "under 100 ms"],
-                        [[f"`{w.factory}`", w.control, format_seconds(w.update), format_seconds(w.compute),
-                          format_seconds(w.render), format_seconds(w.build), str(w.updates),
-                          ("yes" if w.update < WIDGET_LIMIT else "**no**") if not w.error else f"failed: {w.error}"]
-                         for w in widgets])
+        lines += [
+            "",
+            "**Widgets** (median over the slider moves of `update(**controls)`, limit 100 ms; of it, "
+            "`compute` is the `cagd_ref` part and `png()` matplotlib's rendering and PNG encoding, each timed "
+            "on its own after the update; the rest is creating the artists):",
+            "",
+        ]
+        lines += _table(
+            ["explorer", "slider moved", "update (median)", "compute", "png()", "build", "moves", "under 100 ms"],
+            [
+                [
+                    f"`{w.factory}`",
+                    w.control,
+                    format_seconds(w.update),
+                    format_seconds(w.compute),
+                    format_seconds(w.render),
+                    format_seconds(w.build),
+                    str(w.updates),
+                    ("yes" if w.update < WIDGET_LIMIT else "**no**") if not w.error else f"failed: {w.error}",
+                ]
+                for w in widgets
+            ],
+        )
     grading = results.get("grading")
     if grading:
-        lines += ["", f"**Grading**: one submission (the complete chapter 1-2 solution of the test fixtures, graded on "
-                  f"all {grading.exercises} exercises of the course, score {grading.score}) takes "
-                  f"**{grading.seconds:.2f} s** (median of {grading.runs}), sandboxed worker process included."]
+        lines += [
+            "",
+            f"**Grading**: one submission (the complete chapter 1-2 solution of the test fixtures, graded on "
+            f"all {grading.exercises} exercises of the course, score {grading.score}) takes "
+            f"**{grading.seconds:.2f} s** (median of {grading.runs}), sandboxed worker process included.",
+        ]
     return lines
 
 
@@ -173,18 +248,30 @@ def markdown(results: dict, found: list[Verdict], context: dict) -> str:
     lines += _verdicts(found)
     sections = [
         ("bezier", "Bézier evaluation", "Random planar curves, evenly spaced parameters on [0, 1].", _bezier),
-        ("bspline", "B-spline evaluation",
-         "Random planar control points, uniform interior knots on [0, 1] with Bézier end conditions, evenly spaced "
-         "parameters over the domain.", _bspline),
-        ("knots", "Knot insertion and Bézier extraction",
-         "B-splines as above (cubic). Insertion of one knot at 0.618…: `insert_knot` against SciPy's "
-         "`BSpline.insert_knot` and geomdl's `operations.insert_knot` (on a copy made off the clock, since it "
-         "changes its input). Extraction of every segment's Bézier points: `bezier_segments` against geomdl's "
-         "`operations.decompose_curve` and, as SciPy has no such routine, `BSpline.insert_knot(x, m)` raising each "
-         "interior knot to multiplicity n.", _knots),
-        ("roots", "Root finding on Wilkinson-type polynomials",
-         "Roots k/(n+1), k = 1..n; coefficients exact in each basis, then rounded once to doubles. Error: largest "
-         "distance between an exact root and the matching computed one.", _roots),
+        (
+            "bspline",
+            "B-spline evaluation",
+            "Random planar control points, uniform interior knots on [0, 1] with Bézier end conditions, evenly spaced "
+            "parameters over the domain.",
+            _bspline,
+        ),
+        (
+            "knots",
+            "Knot insertion and Bézier extraction",
+            "B-splines as above (cubic). Insertion of one knot at 0.618…: `insert_knot` against SciPy's "
+            "`BSpline.insert_knot` and geomdl's `operations.insert_knot` (on a copy made off the clock, since it "
+            "changes its input). Extraction of every segment's Bézier points: `bezier_segments` against geomdl's "
+            "`operations.decompose_curve` and, as SciPy has no such routine, `BSpline.insert_knot(x, m)` raising each "
+            "interior knot to multiplicity n.",
+            _knots,
+        ),
+        (
+            "roots",
+            "Root finding on Wilkinson-type polynomials",
+            "Roots k/(n+1), k = 1..n; coefficients exact in each basis, then rounded once to doubles. Error: largest "
+            "distance between an exact root and the matching computed one.",
+            _roots,
+        ),
     ]
     for key, title, about, table in sections:
         if results.get(key):
@@ -214,8 +301,14 @@ def _line(ax, xs, ys, label, style="-o", extrapolated=None):
 def _timing_line(ax, xs, cases: list[Case], method: str, style: str = "-o") -> None:
     """One method's best times over the given cases, extrapolated ones drawn open."""
     measured = [c.get(method) for c in cases]
-    _line(ax, xs, [m.seconds if m else None for m in measured], method, style,
-          extrapolated=[bool(m and m.extrapolated_from) for m in measured])
+    _line(
+        ax,
+        xs,
+        [m.seconds if m else None for m in measured],
+        method,
+        style,
+        extrapolated=[bool(m and m.extrapolated_from) for m in measured],
+    )
 
 
 def figure(results: dict, found: list[Verdict], path: Path) -> None:
@@ -236,8 +329,13 @@ def figure(results: dict, found: list[Verdict], path: Path) -> None:
         degrees = [c.params["degree"] for c in chosen]
         for method in (BEZIER_EVALUATE, BEZIER_DE_CASTELJAU, BEZIER_PACKAGE, BEZIER_GEOMDL, BEZIER_MATRIX):
             _timing_line(ax, degrees, chosen, method)
-        ax.set(title=f"Bézier evaluation, {format_count(size)} values (open: extrapolated)", xlabel="degree",
-               ylabel="seconds", yscale="log", xticks=degrees)
+        ax.set(
+            title=f"Bézier evaluation, {format_count(size)} values (open: extrapolated)",
+            xlabel="degree",
+            ylabel="seconds",
+            yscale="log",
+            xticks=degrees,
+        )
 
     ax = axes[0, 1]
     cases = results.get("bspline", [])
@@ -249,20 +347,32 @@ def figure(results: dict, found: list[Verdict], path: Path) -> None:
         degrees = [c.params["degree"] for c in chosen]
         for method in (DE_BOOR, SCIPY_BSPLINE, GEOMDL_BSPLINE):
             _timing_line(ax, degrees, chosen, method)
-        ax.set(title=f"B-spline evaluation, {count} control points, {format_count(size)} values", xlabel="degree",
-               ylabel="seconds", yscale="log", xticks=degrees)
+        ax.set(
+            title=f"B-spline evaluation, {count} control points, {format_count(size)} values",
+            xlabel="degree",
+            ylabel="seconds",
+            yscale="log",
+            xticks=degrees,
+        )
 
     ax = axes[0, 2]
     cases = results.get("knots", [])
     if cases:
-        for operation, methods in (("insertion", (INSERT, SCIPY_INSERT, GEOMDL_INSERT)),
-                                   ("extraction", (EXTRACT, SCIPY_EXTRACT, GEOMDL_EXTRACT))):
+        for operation, methods in (
+            ("insertion", (INSERT, SCIPY_INSERT, GEOMDL_INSERT)),
+            ("extraction", (EXTRACT, SCIPY_EXTRACT, GEOMDL_EXTRACT)),
+        ):
             chosen = [c for c in cases if c.params["operation"] == operation]
             counts = [c.params["control points"] for c in chosen]
             for method in methods:
                 _timing_line(ax, counts, chosen, method, "-o" if operation == "extraction" else "--s")
-        ax.set(title="Knot insertion (dashed), extraction (solid)", xlabel="control points",
-               ylabel="seconds", xscale="log", yscale="log")
+        ax.set(
+            title="Knot insertion (dashed), extraction (solid)",
+            xlabel="control points",
+            ylabel="seconds",
+            xscale="log",
+            yscale="log",
+        )
 
     ax = axes[1, 0]
     cases = results.get("roots", [])
@@ -270,8 +380,13 @@ def figure(results: dict, found: list[Verdict], path: Path) -> None:
         degrees = [c.params["degree"] for c in cases]
         for method in (BERNSTEIN, NUMPY_ROOTS, POLYNOMIAL_ROOTS):
             _line(ax, degrees, [max(c.get(method).difference, 1e-17) for c in cases], method)
-        ax.set(title="Largest root error, Wilkinson-type polynomials", xlabel="degree", ylabel="error", yscale="log",
-               xticks=degrees)
+        ax.set(
+            title="Largest root error, Wilkinson-type polynomials",
+            xlabel="degree",
+            ylabel="error",
+            yscale="log",
+            xticks=degrees,
+        )
 
     ax = axes[1, 1]
     widgets = [w for w in results.get("widgets", []) if not w.error]

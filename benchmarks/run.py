@@ -46,7 +46,9 @@ def _runner(section: str):
         from benchmarks.rootfinding import root_cases
         return root_cases
     from benchmarks import health
-    return {"widgets": health.widget_timings, "grading": health.grading_timing, "chapters": health.chapter_timings}[section]
+    return {"widgets": health.widget_timings, "grading": health.grading_timing, "chapters": health.chapter_timings}[
+        section
+    ]
 
 
 def _machine() -> str:
@@ -58,7 +60,9 @@ def _machine() -> str:
                 break
     except OSError:
         pass
-    return f"{model}, {os.cpu_count()} CPUs, {platform.system()} {platform.release()}, Python {platform.python_version()}"
+    return (
+        f"{model}, {os.cpu_count()} CPUs, {platform.system()} {platform.release()}, Python {platform.python_version()}"
+    )
 
 
 def _load() -> str:
@@ -68,7 +72,9 @@ def _load() -> str:
         return "unknown"
 
 
-def run(plan: Plan, sections: tuple[str, ...] = SECTIONS, out: Path = RESULTS, command: str = "benchmarks/run.py") -> dict:
+def run(
+    plan: Plan, sections: tuple[str, ...] = SECTIONS, out: Path = RESULTS, command: str = "benchmarks/run.py"
+) -> dict:
     """Measure the chosen sections with `plan`, write benchmarks.md and benchmarks.png to `out`.
 
     Returns {"results": per-section results, "verdicts": [...], "markdown": Path, "figure": Path}.
@@ -80,8 +86,10 @@ def run(plan: Plan, sections: tuple[str, ...] = SECTIONS, out: Path = RESULTS, c
     from benchmarks.targets import verdict_line, verdicts
 
     started, load_before = time.perf_counter(), _load()
-    progress(f"benchmarks: {plan.name} run of {', '.join(sections)}; peers: "
-             + ", ".join(f"{name} {peers.version(name)}" for name in peers.PEERS))
+    progress(
+        f"benchmarks: {plan.name} run of {', '.join(sections)}; peers: "
+        + ", ".join(f"{name} {peers.version(name)}" for name in peers.PEERS)
+    )
     results = {}
     for section in sections:
         progress(f"--- {section}")
@@ -112,9 +120,14 @@ def run(plan: Plan, sections: tuple[str, ...] = SECTIONS, out: Path = RESULTS, c
 def main(argv: list[str] | None = None) -> dict:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="small sizes and one chapter: a smoke run")
-    parser.add_argument("--only", default=",".join(SECTIONS),
-                        help=f"comma-separated sections to run (default all: {','.join(SECTIONS)})")
-    parser.add_argument("--out", type=Path, default=RESULTS, help=f"folder for the report and figure (default {RESULTS})")
+    parser.add_argument(
+        "--only",
+        default=",".join(SECTIONS),
+        help=f"comma-separated sections to run (default all: {','.join(SECTIONS)})",
+    )
+    parser.add_argument(
+        "--out", type=Path, default=RESULTS, help=f"folder for the report and figure (default {RESULTS})"
+    )
     args = parser.parse_args(argv)
     sections = tuple(s.strip() for s in args.only.split(",") if s.strip())
     unknown = sorted(set(sections) - set(SECTIONS))

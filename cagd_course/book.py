@@ -63,7 +63,9 @@ def _build_chapter(chapter: Chapter, out: Path, exporter: HTMLExporter, timeout:
     except (CellExecutionError, OSError, TimeoutError, RuntimeError) as err:
         message = str(err)
         (out / file).write_text(f"<pre>{html.escape(message)}</pre>", encoding="utf-8")
-        pages.append(BuiltPage(chapter.number, chapter.title, file, 0.0, message.splitlines()[0] if message else "failed"))
+        pages.append(
+            BuiltPage(chapter.number, chapter.title, file, 0.0, message.splitlines()[0] if message else "failed")
+        )
     if chapter.exercises is not None:
         exercise_file = f"exercises-{chapter.slug}.html"
         _write_html(nbformat.read(chapter.exercises, as_version=4), out / exercise_file, exporter)
@@ -89,7 +91,9 @@ def _index(course: Course, pages: list[BuiltPage]) -> str:
     )
 
 
-def build_book(out: Path | str = "_build/html", chapters: list[int] | None = None, timeout: int = 300, progress: bool = True) -> list[BuiltPage]:
+def build_book(
+    out: Path | str = "_build/html", chapters: list[int] | None = None, timeout: int = 300, progress: bool = True
+) -> list[BuiltPage]:
     """Execute and convert the chapters (all, or the numbers given) into `out`, with an index page."""
     course = load_course()
     out = Path(out)

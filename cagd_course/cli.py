@@ -95,7 +95,9 @@ def _add_limits(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--submission-timeout", type=float, default=120.0, help="seconds allowed per submission in all (default 120)"
     )
-    parser.add_argument("--memory", type=int, default=1024, help="memory limit of the graded process in MB (default 1024)")
+    parser.add_argument(
+        "--memory", type=int, default=1024, help="memory limit of the graded process in MB (default 1024)"
+    )
     parser.add_argument("--seed", type=int, default=0, help="seed of the random cases (default 0)")
 
 
@@ -122,7 +124,9 @@ def build_parser() -> argparse.ArgumentParser:
     _add_limits(p)
     p.set_defaults(run=_cmd_check)
 
-    p = sub.add_parser("validate", help="prove every hidden suite: reference 100%%, stub 0%%, recorded mistakes < 100%%")
+    p = sub.add_parser(
+        "validate", help="prove every hidden suite: reference 100%%, stub 0%%, recorded mistakes < 100%%"
+    )
     p.add_argument("--exercise", action="append", metavar="ID", help="only this exercise id (repeatable)")
     p.add_argument("--seed", type=int, default=0, help="seed of the random cases (default 0)")
     p.set_defaults(run=_cmd_validate)
@@ -133,7 +137,11 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--jobs", type=int, default=1, help="submissions graded in parallel (default 1)")
     p.add_argument("--force", action="store_true", help="regrade submissions already in the gradebook")
     p.add_argument(
-        "--chapter", type=int, action="append", metavar="N", help="grade only chapter N's exercises (repeatable; default all)"
+        "--chapter",
+        type=int,
+        action="append",
+        metavar="N",
+        help="grade only chapter N's exercises (repeatable; default all)",
     )
     _add_limits(p)
     p.set_defaults(run=_cmd_grade)

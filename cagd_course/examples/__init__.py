@@ -138,10 +138,20 @@ def _example(chapter: int, name: str, table: dict) -> NotesExample:
     known = {"section", "summary", "inputs", "results", "errata"}
     unknown = set(table) - known
     if unknown or "section" not in table:
-        raise ValueError(f"ch{chapter:02d}.toml [{name}]: needs a section; allowed keys {sorted(known)}, got {sorted(table)}")
-    errata = {key: Erratum(_value(e["notes"]), _value(e["correct"]), e["why"]) for key, e in table.get("errata", {}).items()}
-    return NotesExample(f"{chapter:02d}.{name}", str(table["section"]), table.get("summary", ""),
-                        _value(table.get("inputs", {})), _value(table.get("results", {})), errata)
+        raise ValueError(
+            f"ch{chapter:02d}.toml [{name}]: needs a section; allowed keys {sorted(known)}, got {sorted(table)}"
+        )
+    errata = {
+        key: Erratum(_value(e["notes"]), _value(e["correct"]), e["why"]) for key, e in table.get("errata", {}).items()
+    }
+    return NotesExample(
+        f"{chapter:02d}.{name}",
+        str(table["section"]),
+        table.get("summary", ""),
+        _value(table.get("inputs", {})),
+        _value(table.get("results", {})),
+        errata,
+    )
 
 
 @cache

@@ -154,7 +154,10 @@ class ClassSummary:
             + (f"; slowest exercise {self.slowest_exercise}" if self.slowest_exercise else "")
         )
         if self.unconfined:
-            text += f"\nWARNING: graded code could write files as your user ({self.unconfined}); grade in a container or VM."
+            text += (
+                f"\nWARNING: graded code could write files as your user ({self.unconfined}); "
+                "grade in a container or VM."
+            )
         return text
 
 
@@ -168,7 +171,10 @@ def grade_class(
     progress: bool = True,
     chapters: list[int] | None = None,
 ) -> ClassSummary:
-    """Grade every submission under `paths` into `out` (on the exercises of `chapters`, default all); resume unless `force`."""
+    """Grade every submission under `paths` into `out` (on the exercises of `chapters`, default all).
+
+    Submissions already in the gradebook are skipped unless `force`.
+    """
     started = time.monotonic()
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
@@ -181,10 +187,13 @@ def grade_class(
     rows = {} if force else {k: v for k, v in read_gradebook(gradebook).items() if k in submissions}
     todo = {name: path for name, path in submissions.items() if name not in rows}
     new_rows: list[GradeRow] = []
-    with ThreadPoolExecutor(max_workers=max(1, jobs)) as pool, tqdm(
-        total=len(todo), desc="grading", unit="submission", disable=None if progress else True
-    ) as bar:
-        futures = {pool.submit(grade_one, name, path, exercises, seed, limits, out): name for name, path in todo.items()}
+    with (
+        ThreadPoolExecutor(max_workers=max(1, jobs)) as pool,
+        tqdm(total=len(todo), desc="grading", unit="submission", disable=None if progress else True) as bar,
+    ):
+        futures = {
+            pool.submit(grade_one, name, path, exercises, seed, limits, out): name for name, path in todo.items()
+        }
         for future in as_completed(futures):
             row = future.result()
             new_rows.append(row)

@@ -145,7 +145,10 @@ def _mutation(case: Case, event: dict) -> str:
             except (TypeError, ValueError):
                 same = False
             if not same:
-                return f"the function modified its input argument {position + 1} in place (inputs must be left unchanged)"
+                return (
+                    f"the function modified its input argument {position + 1} in place "
+                    "(inputs must be left unchanged)"
+                )
     return ""
 
 
@@ -192,7 +195,9 @@ class GradeRun:
         return round(sum(e.points for e in self.exercises), 4)
 
 
-def grade_statements(statements: list[dict], prepared: list[Prepared], limits: Limits = Limits(), allow_reference: bool = False) -> GradeRun:
+def grade_statements(
+    statements: list[dict], prepared: list[Prepared], limits: Limits = Limits(), allow_reference: bool = False
+) -> GradeRun:
     """Run the submission's statements in a worker on every prepared exercise and score the answers."""
     run = run_tasks(statements, [p.task() for p in prepared], limits, allow_reference)
     results = []

@@ -54,7 +54,10 @@ def check_text(result: ExerciseResult, load_problems: list[str] = (), skipped: l
     """The self-check report of one exercise: what passes, what fails, and what to fix next."""
     rows = exercise_summary(result)
     passed_groups = sum(1 for _, ok, total, _ in rows if ok == total)
-    lines = [f"{result.id}: {result.score:g} / {result.points:g} points ({passed_groups} of {len(rows)} groups of cases pass)"]
+    lines = [
+        f"{result.id}: {result.score:g} / {result.points:g} points "
+        f"({passed_groups} of {len(rows)} groups of cases pass)"
+    ]
     for category, ok, total, failing in rows:
         mark = "PASS" if ok == total else "FAIL"
         lines.append(f"  [{mark}] {category}: {ok}/{total}")
@@ -75,10 +78,13 @@ def _next_step(result: ExerciseResult, rows) -> str:
     if failing is None:
         return "All cases pass. Well done!"
     if all(not c.passed and "NotImplementedError" in c.message for c in result.cases):
-        return "Not written yet: replace `raise NotImplementedError` in the function above, run that cell, then run this check again."
+        return (
+            "Not written yet: replace `raise NotImplementedError` in the function above, run that cell, "
+            "then run this check again."
+        )
     if result.stopped:
         return f"Next: {result.stopped}. Look for a loop that never ends or a very slow step."
-    advice = f"Next: fix the first failing group, \"{failing.category}\"."
+    advice = f'Next: fix the first failing group, "{failing.category}".'
     if result.hint:
         advice += f"\nHint: {result.hint}"
     return advice
@@ -113,7 +119,9 @@ def feedback_html(name: str, results: list[ExerciseResult], score: float, max_sc
             body.append(f"<p class='stopped'>{esc(result.stopped)}</p>")
         body.append("<table><tr><th>cases</th><th>passed</th><th>first failure</th></tr>")
         for category, ok, total, failing in exercise_summary(result):
-            detail = "" if failing is None else "<pre>" + esc("\n".join(_failure_detail(result, failing)).strip()) + "</pre>"
+            detail = (
+                "" if failing is None else "<pre>" + esc("\n".join(_failure_detail(result, failing)).strip()) + "</pre>"
+            )
             css = "pass" if ok == total else "fail"
             body.append(f"<tr class='{css}'><td>{esc(category)}</td><td>{ok}/{total}</td><td>{detail}</td></tr>")
         body.append("</table>")

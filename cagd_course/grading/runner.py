@@ -236,7 +236,8 @@ class _Session:
                 raise _ProtocolError("the graded process reported more cases than it was given")
             cases.append(event)
         elif kind == "end":
-            if event.get("exercise") != self.current or len(self.result.events[self.current]) != len(self.tasks[0].cases):
+            finished = len(self.result.events[self.current]) == len(self.tasks[0].cases)
+            if event.get("exercise") != self.current or not finished:
                 raise _ProtocolError("the graded process ended an exercise early")
             self.result.seconds[self.current] = time.monotonic() - self.exercise_started
             self.tasks = self.tasks[1:]
@@ -295,7 +296,9 @@ class _ProtocolError(Exception):
     pass
 
 
-def run_tasks(statements: list[dict], tasks: list[Task], limits: Limits = Limits(), allow_reference: bool = False) -> RunResult:
+def run_tasks(
+    statements: list[dict], tasks: list[Task], limits: Limits = Limits(), allow_reference: bool = False
+) -> RunResult:
     """Run every task in isolated worker processes, restarting after a hang or crash."""
     result = RunResult()
     started = time.monotonic()

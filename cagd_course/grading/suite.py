@@ -123,7 +123,8 @@ def _compare(expected, received, rtol, atol, where: str) -> str | None:
 
 def _compare_numbers(expected: np.ndarray, received, rtol, atol, at: str) -> str | None:
     if isinstance(received, (str, bytes)) or received is None:
-        return f"expected {'a number' if expected.ndim == 0 else f'an array of shape {expected.shape}'}{at}, got {_describe(received)}"
+        wanted = "a number" if expected.ndim == 0 else f"an array of shape {expected.shape}"
+        return f"expected {wanted}{at}, got {_describe(received)}"
     try:
         got = np.asarray(received, dtype=float)
     except (TypeError, ValueError):
@@ -136,9 +137,7 @@ def _compare_numbers(expected: np.ndarray, received, rtol, atol, at: str) -> str
         diff = np.abs(got - expected)
         worst = np.unravel_index(int(np.nanargmax(np.where(np.isnan(diff), np.inf, diff))), diff.shape)
         index = f" (entry {tuple(int(i) for i in worst)})" if expected.ndim else ""
-        return (
-            f"wrong value{at}{index}: expected {_short(expected[worst])}, got {_short(got[worst])}"
-        )
+        return f"wrong value{at}{index}: expected {_short(expected[worst])}, got {_short(got[worst])}"
     return None
 
 

@@ -53,7 +53,9 @@ def mistake_files(hidden_suite: Path) -> dict[str, list[Path]]:
     return found
 
 
-def validate(course: Course | None = None, seed: int = 0, ids: list[str] | None = None, progress: bool = True) -> list[Verdict]:
+def validate(
+    course: Course | None = None, seed: int = 0, ids: list[str] | None = None, progress: bool = True
+) -> list[Verdict]:
     """Grade the reference, the shipped stubs and the recorded mistakes of every exercise."""
     course = course or load_course()
     exercises = load_exercises(course, ids)
@@ -72,7 +74,9 @@ def validate(course: Course | None = None, seed: int = 0, ids: list[str] | None 
             for path in mistakes.get(item.exercise.function, []):
                 statements = extract_source([path.read_text(encoding="utf-8")]).statements
                 jobs.append(("mistake", [item], statements, path.stem.split("__", 1)[1]))
-    for kind, items, statements, label in tqdm(jobs, desc="validating suites", unit="run", disable=None if progress else True):
+    for kind, items, statements, label in tqdm(
+        jobs, desc="validating suites", unit="run", disable=None if progress else True
+    ):
         outcome = grade_statements(statements, items, limits, allow_reference=kind == "reference")
         for result in outcome.exercises:
             verdict = verdicts[result.id]
@@ -85,7 +89,13 @@ def validate(course: Course | None = None, seed: int = 0, ids: list[str] | None 
 
 def _reference_statements(items) -> list[dict]:
     return [
-        {"source": f"from {p.exercise.reference.__module__} import {p.exercise.reference.__name__} as {p.exercise.function}", "where": "reference"}
+        {
+            "source": (
+                f"from {p.exercise.reference.__module__} import {p.exercise.reference.__name__} "
+                f"as {p.exercise.function}"
+            ),
+            "where": "reference",
+        }
         for p in items
     ]
 

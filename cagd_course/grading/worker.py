@@ -254,7 +254,8 @@ def apply_sandbox(policy: dict) -> str:
     import resource
 
     notes = []
-    for name, value in (("RLIMIT_AS", policy["memory_bytes"]), ("RLIMIT_FSIZE", policy["file_bytes"]), ("RLIMIT_CORE", 0)):
+    limits = (("RLIMIT_AS", policy["memory_bytes"]), ("RLIMIT_FSIZE", policy["file_bytes"]), ("RLIMIT_CORE", 0))
+    for name, value in limits:
         try:
             resource.setrlimit(getattr(resource, name), (value, value))
         except (AttributeError, ValueError, OSError):

@@ -34,7 +34,13 @@ def plot_implicit(ax, f, xlim, ylim, resolution: int = 300, **style) -> Axes:
         ax.contour(x, y, values, levels=[0.0], **options)
     if legend is not None:
         # Contour sets carry no legend entry, so a line with no points stands in for it.
-        ax.plot([], [], color=np.atleast_1d(options["colors"])[0], linewidth=np.atleast_1d(options["linewidths"])[0], label=legend)
+        ax.plot(
+            [],
+            [],
+            color=np.atleast_1d(options["colors"])[0],
+            linewidth=np.atleast_1d(options["linewidths"])[0],
+            label=legend,
+        )
     ax.set_xlim(x0, x1)
     ax.set_ylim(y0, y1)
     return finish_planar(ax, adjustable="box")

@@ -14,7 +14,7 @@ __all__ = ["plot_vector"]
 
 
 def plot_vector(ax, tail, vector, label: str | None = None, **style) -> Axes:
-    """Draw the vector `vector` as an arrow starting at point `tail` (both (2,) on 2-D axes, (3,) on 3-D axes). Notes §1.1.
+    """Draw the vector `vector` as an arrow from point `tail` (both (2,) on 2-D axes, (3,) on 3-D). Notes §1.1.
 
     `label` (mathtext allowed, e.g. "$\\mathbf{v}$") is written next to the arrow's head.
     """

@@ -14,7 +14,9 @@ SOLUTION = ROOT / "tests" / "grading" / "fixtures" / "submissions" / "complete.i
 
 
 def test_help_lists_every_subcommand():
-    result = subprocess.run([sys.executable, "-m", "cagd_course.cli", "--help"], capture_output=True, text=True, check=True)
+    result = subprocess.run(
+        [sys.executable, "-m", "cagd_course.cli", "--help"], capture_output=True, text=True, check=True
+    )
     for command in ("list", "check", "validate", "grade", "book"):
         assert command in result.stdout
 
@@ -64,3 +66,26 @@ def test_book_builds_a_chapter_with_its_widgets_and_a_table_of_contents(tmp_path
     assert "01-introduction.html" in index and "exercises-01-introduction.html" in index
     page = (tmp_path / "01-introduction.html").read_text()
     assert "application/vnd.jupyter.widget-state+json" in page and "<img" in page
+
+
+@pytest.fixture
+def unnamed_course(monkeypatch):
+    """No CAGD_COURSE during the test, and whatever `cagd --course` sets in it is undone afterwards."""
+    monkeypatch.setenv("CAGD_COURSE", "")
+    monkeypatch.delenv("CAGD_COURSE")
+
+
+def test_the_course_folder_is_found_from_anywhere_inside_it_or_named(tmp_path, monkeypatch, capsys, unnamed_course):
+    monkeypatch.chdir(ROOT / "exercises")
+    assert main(["list"]) == 0
+    assert "02.de_casteljau" in capsys.readouterr().out
+    # A folder of its own: --course names it (and the run's child processes inherit it).
+    (tmp_path / "book.toml").write_text('[book]\ntitle = "A tiny course"\n', encoding="utf-8")
+    monkeypatch.chdir(ROOT.parent)
+    assert main(["--course", str(tmp_path), "list"]) == 0
+    assert capsys.readouterr().out.strip() == "A tiny course"
+
+
+def test_a_missing_course_folder_is_a_clear_error(tmp_path, capsys, unnamed_course):
+    assert main(["--course", str(tmp_path / "nowhere"), "list"]) == 2
+    assert "book.toml" in capsys.readouterr().err

@@ -22,7 +22,9 @@ def class_folder(tmp_path_factory):
     shutil.copy(SUBMISSIONS / "complete.ipynb", folder / "ada.ipynb")
     shutil.copy(ROOT / "exercises" / "02-bezier-curves.ipynb", folder / "bob.ipynb")
     text = (SUBMISSIONS / "complete.ipynb").read_text()
-    (folder / "cy.ipynb").write_text(text.replace("(1 - t) * levels[-1][:-1] + t * levels[-1][1:]", "t * levels[-1][:-1] + (1 - t) * levels[-1][1:]"))
+    (folder / "cy.ipynb").write_text(
+        text.replace("(1 - t) * levels[-1][:-1] + t * levels[-1][1:]", "t * levels[-1][:-1] + (1 - t) * levels[-1][1:]")
+    )
     (folder / "dee.ipynb").write_text("{ this is not json")
     return folder
 

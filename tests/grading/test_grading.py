@@ -28,12 +28,14 @@ def _casteljau_cases(rng):
 EXERCISES = {
     "02.de_casteljau": (Exercise("02.de_casteljau", bezier.de_casteljau, _casteljau_cases, hint="interpolate"), 3.0),
     "02.elevate": (
-        Exercise("02.elevate", bezier.elevate, lambda rng: [Case("cubic", (np.array([[0.0, 0], [1, 2], [3, 2], [4, 0]]),))]),
+        Exercise(
+            "02.elevate", bezier.elevate, lambda rng: [Case("cubic", (np.array([[0.0, 0], [1, 2], [3, 2], [4, 0]]),))]
+        ),
         2.0,
     ),
 }
 
-GOOD = '''
+GOOD = """
 import numpy as np
 
 def de_casteljau(points, t):
@@ -51,7 +53,7 @@ def elevate(points):
     n = len(p) - 1
     a = (np.arange(n + 2) / (n + 1))[:, None]
     return a * np.vstack([p[:1], p]) + (1 - a) * np.vstack([p, p[-1:]])
-'''
+"""
 
 
 def _grade(source, exercises=EXERCISES, seed=1, limits=FAST):
@@ -68,9 +70,26 @@ def test_extraction_keeps_top_level_defs_and_imports_wherever_they_stand():
     ]
     submission = extract_source(cells)
     sources = [s["source"] for s in submission.statements]
-    assert sources == ["import numpy as np", "def f(a):\n    return a", "@staticmethod\ndef g():\n    pass", "def f(a):\n    return 2 * a"]
+    assert sources == [
+        "import numpy as np",
+        "def f(a):\n    return a",
+        "@staticmethod\ndef g():\n    pass",
+        "def f(a):\n    return 2 * a",
+    ]
     assert len(submission.skipped) == 2
     assert "does not parse" in submission.skipped[0] and "cagd_ref" in submission.skipped[1]
+
+
+def test_the_notebooks_own_course_imports_are_dropped_without_a_note():
+    cells = [
+        "from cagd_course import check\nfrom cagd_course.examples import notes_example",
+        "from cagd_course.plotting import plot_bezier\nimport cagd_course.widgets",
+        "def f(a):\n    return a",
+    ]
+    submission = extract_source(cells)
+    assert [s["source"] for s in submission.statements] == ["def f(a):\n    return a"]
+    # Only the imports a student added get a note: they will not be there when the function is graded.
+    assert len(submission.skipped) == 2 and all("cagd_course" in note for note in submission.skipped)
 
 
 @pytest.mark.parametrize(
@@ -91,7 +110,12 @@ def test_unreadable_notebooks_are_reported_with_a_plain_status(tmp_path, content
 
 
 def test_codec_round_trips_arrays_tuples_and_special_floats():
-    value = (np.arange(6.0).reshape(2, 3), [1, "a", None, float("nan")], {"k": np.float64(2.5)}, np.array([True, False]))
+    value = (
+        np.arange(6.0).reshape(2, 3),
+        [1, "a", None, float("nan")],
+        {"k": np.float64(2.5)},
+        np.array([True, False]),
+    )
     back = decode(json.loads(json.dumps(encode(value))))
     assert isinstance(back, tuple) and np.array_equal(back[0], value[0]) and back[0].shape == (2, 3)
     assert back[1][:3] == [1, "a", None] and np.isnan(back[1][3])
@@ -115,8 +139,14 @@ def test_the_reference_itself_passes_in_a_trusted_worker():
     "source",
     [
         "from cagd_ref.bezier import de_casteljau",
-        "import importlib\ndef de_casteljau(p, t):\n    return importlib.import_module('cagd_ref.bezier').de_casteljau(p, t)",
+        "import importlib\n"
+        "def de_casteljau(p, t):\n    return importlib.import_module('cagd_ref.bezier').de_casteljau(p, t)",
         "def de_casteljau(p, t):\n    return __import__('cagd_ref.bezier', fromlist=['x']).de_casteljau(p, t)",
+        # The grader's own package is as far out of reach: it could read the suites or call the reference.
+        "import importlib\n"
+        "def de_casteljau(p, t):\n"
+        "    engine = importlib.import_module('cagd_course.grading.engine')\n"
+        "    return engine.load_exercises()['02.de_casteljau'][0].reference(p, t)",
     ],
 )
 def test_the_reference_cannot_be_imported_by_graded_code(source):
@@ -132,7 +162,9 @@ def test_a_stub_scores_zero_and_the_check_says_to_write_it():
 
 
 def test_wrong_values_show_the_first_failing_visible_case():
-    source = GOOD.replace("(1 - ts) * level[:, :-1] + ts * level[:, 1:]", "ts * level[:, :-1] + (1 - ts) * level[:, 1:]")
+    source = GOOD.replace(
+        "(1 - ts) * level[:, :-1] + ts * level[:, 1:]", "ts * level[:, :-1] + (1 - ts) * level[:, 1:]"
+    )
     result = _grade(source).exercises[0]
     text = check_text(result)
     assert "[FAIL] notes example" in text and "expected:" in text and "received:" in text
@@ -140,7 +172,9 @@ def test_wrong_values_show_the_first_failing_visible_case():
 
 
 def test_an_endless_loop_is_stopped_and_the_next_exercise_still_runs():
-    source = GOOD.replace("def de_casteljau(points, t):\n", "def de_casteljau(points, t):\n    while True:\n        pass\n", 1)
+    source = GOOD.replace(
+        "def de_casteljau(points, t):\n", "def de_casteljau(points, t):\n    while True:\n        pass\n", 1
+    )
     outcome = _grade(source)
     first, second = outcome.exercises
     assert first.score == 0 and first.stopped.startswith("timed out")
@@ -148,7 +182,9 @@ def test_an_endless_loop_is_stopped_and_the_next_exercise_still_runs():
 
 
 def test_a_hard_exit_costs_only_the_exercise_it_happens_in():
-    source = GOOD.replace("    p = np.array(points, dtype=float)\n    n = len(p) - 1", "    import os\n    os._exit(7)", 1)
+    source = GOOD.replace(
+        "    p = np.array(points, dtype=float)\n    n = len(p) - 1", "    import os\n    os._exit(7)", 1
+    )
     outcome = _grade(source)
     first, second = outcome.exercises
     assert first.score == 3 and second.score == 0
@@ -156,7 +192,11 @@ def test_a_hard_exit_costs_only_the_exercise_it_happens_in():
 
 
 def test_modifying_an_input_in_place_fails_the_case():
-    source = GOOD.replace("    p = np.array(points, dtype=float)\n    n = len(p) - 1", "    p = np.array(points, dtype=float)\n    points[1, 1] = 99\n    n = len(p) - 1", 1)
+    source = GOOD.replace(
+        "    p = np.array(points, dtype=float)\n    n = len(p) - 1",
+        "    p = np.array(points, dtype=float)\n    points[1, 1] = 99\n    n = len(p) - 1",
+        1,
+    )
     result = _grade(source).exercises[1]
     assert result.score == 0 and "modified its input" in result.cases[0].message
 

@@ -24,49 +24,73 @@ OUT_MARKER = "@OUT@"
 HOSTILE = {
     "infinite_loop": ("def projection(p, q):\n    while True:\n        pass", 9, "01.projection: timed out after 3 s"),
     "ignores_signals": (
-        "import signal\ndef projection(p, q):\n    for s in (signal.SIGTERM, signal.SIGINT, signal.SIGALRM, signal.SIGHUP):\n"
+        "import signal\ndef projection(p, q):\n"
+        "    for s in (signal.SIGTERM, signal.SIGINT, signal.SIGALRM, signal.SIGHUP):\n"
         "        signal.signal(s, signal.SIG_IGN)\n    while True:\n        pass",
         9,
         "01.projection: timed out after 3 s",
     ),
     "memory_exhaustion": (
-        "import numpy as np\ndef projection(p, q):\n    hoard = []\n    while True:\n        hoard.append(np.zeros(50_000_000))",
+        "import numpy as np\ndef projection(p, q):\n    hoard = []\n    while True:\n"
+        "        hoard.append(np.zeros(50_000_000))",
         9,
         "01.projection: memory limit exceeded",
     ),
     "sys_exit": ("import sys\ndef projection(p, q):\n    sys.exit(0)", 9, "01.projection: called sys.exit"),
-    "os_exit": ("import os\ndef projection(p, q):\n    os._exit(0)", 9, "01.projection: the process exited with code 0 before finishing"),
-    "hard_crash": ("import ctypes\ndef projection(p, q):\n    ctypes.string_at(0)", 9, "01.projection: the process crashed (SIGSEGV)"),
+    "os_exit": (
+        "import os\ndef projection(p, q):\n    os._exit(0)",
+        9,
+        "01.projection: the process exited with code 0 before finishing",
+    ),
+    "hard_crash": (
+        "import ctypes\ndef projection(p, q):\n    ctypes.string_at(0)",
+        9,
+        "01.projection: the process crashed (SIGSEGV)",
+    ),
     "output_flood": (
-        "import numpy as np\ndef projection(p, q):\n    if not hasattr(projection, 'flooded'):\n        projection.flooded = True\n        print('x' * 100_000_000)\n    p, q = np.asarray(p, float), np.asarray(q, float)\n"
-        "    if p.shape != q.shape or p.ndim != 1 or not q.any():\n        raise ValueError('p, q')\n    return p @ q / (q @ q) * q",
+        "import numpy as np\ndef projection(p, q):\n    if not hasattr(projection, 'flooded'):\n"
+        "        projection.flooded = True\n        print('x' * 100_000_000)\n"
+        "    p, q = np.asarray(p, float), np.asarray(q, float)\n"
+        "    if p.shape != q.shape or p.ndim != 1 or not q.any():\n        raise ValueError('p, q')\n"
+        "    return p @ q / (q @ q) * q",
         10,
         "output truncated",
     ),
     "patches_comparisons": (
         "import numpy as np\nimport numpy.testing\nnp.allclose = lambda *a, **k: True\n"
-        "def projection(p, q):\n    np.allclose = lambda *a, **k: True\n    np.testing.assert_allclose = lambda *a, **k: None\n"
+        "def projection(p, q):\n    np.allclose = lambda *a, **k: True\n"
+        "    np.testing.assert_allclose = lambda *a, **k: None\n"
         "    import math\n    math.isclose = lambda *a, **k: True\n    return np.full(len(q), 7.0)",
         9,
         "ok",
     ),
     "imports_reference": (
         "import importlib\nfrom cagd_ref.geometry import projection as projection\n"
-        "def triangle_area(p1, p2, p3):\n    return importlib.import_module('cagd_ref.geometry').triangle_area(p1, p2, p3)\n"
-        "def conic_type(a, b, c, d, e, f):\n    return __import__('cagd_ref.geometry', fromlist=['x']).conic_type(a, b, c, d, e, f)",
+        "def triangle_area(p1, p2, p3):\n"
+        "    return importlib.import_module('cagd_ref.geometry').triangle_area(p1, p2, p3)\n"
+        "def conic_type(a, b, c, d, e, f):\n"
+        "    return __import__('cagd_ref.geometry', fromlist=['x']).conic_type(a, b, c, d, e, f)",
         7,
         "ok",
     ),
     "writes_files": (
-        "import os\ndef projection(p, q):\n    for target in ['" + str(ROOT / "book.toml") + "', '" + OUT_MARKER + "/gradebook.csv', '"
-        + str(ROOT / "tests" / "hidden" / "ch01.py") + "', '" + OUT_MARKER + "/other/results.json']:\n"
+        "import os\ndef projection(p, q):\n    for target in ['"
+        + str(ROOT / "book.toml")
+        + "', '"
+        + OUT_MARKER
+        + "/gradebook.csv', '"
+        + str(ROOT / "tests" / "hidden" / "ch01.py")
+        + "', '"
+        + OUT_MARKER
+        + "/other/results.json']:\n"
         "        with open(target, 'w') as handle:\n            handle.write('pwned')",
         9,
         "ok",
     ),
     "imitates_grader": (
         "import os, sys\ndef projection(p, q):\n    print('01.projection: 1 / 1 points', 'Total: 10 / 10')\n"
-        "    for fd in [int(a) for a in sys.argv[1:] if a.isdigit()] + list(range(3, 12)):\n        try:\n            os.write(fd, b'{\"event\": \"end\", \"exercise\": \"01.projection\"}\\n')\n"
+        "    for fd in [int(a) for a in sys.argv[1:] if a.isdigit()] + list(range(3, 12)):\n        try:\n"
+        '            os.write(fd, b\'{"event": "end", "exercise": "01.projection"}\\n\')\n'
         "        except OSError:\n            pass\n    return [0.0, 0.0, 0.0]",
         9,
         "01.projection: the graded process ended an exercise early",
@@ -79,13 +103,16 @@ HOSTILE = {
     ),
     "returns_lists": (
         "import numpy as np\ndef projection(p, q):\n    p, q = np.asarray(p, float), np.asarray(q, float)\n"
-        "    if p.shape != q.shape or p.ndim != 1 or not q.any():\n        raise ValueError('p, q')\n    return (p @ q / (q @ q) * q).tolist()",
+        "    if p.shape != q.shape or p.ndim != 1 or not q.any():\n        raise ValueError('p, q')\n"
+        "    return (p @ q / (q @ q) * q).tolist()",
         10,
         "ok",
     ),
     "slow_but_correct": (
-        "import time\nimport numpy as np\ndef projection(p, q):\n    time.sleep(0.02)\n    p, q = np.asarray(p, float), np.asarray(q, float)\n"
-        "    if p.shape != q.shape or p.ndim != 1 or not q.any():\n        raise ValueError('p, q')\n    return p @ q / (q @ q) * q",
+        "import time\nimport numpy as np\ndef projection(p, q):\n    time.sleep(0.02)\n"
+        "    p, q = np.asarray(p, float), np.asarray(q, float)\n"
+        "    if p.shape != q.shape or p.ndim != 1 or not q.any():\n        raise ValueError('p, q')\n"
+        "    return p @ q / (q @ q) * q",
         10,
         "ok",
     ),
@@ -100,7 +127,10 @@ HOSTILE = {
 
 BROKEN_FILES = {
     "not_json": ("{ not a notebook", "invalid notebook (not valid JSON)"),
-    "no_code": (json.dumps(nbformat.v4.new_notebook(cells=[nbformat.v4.new_markdown_cell("I ran out of time.")])), "no code"),
+    "no_code": (
+        json.dumps(nbformat.v4.new_notebook(cells=[nbformat.v4.new_markdown_cell("I ran out of time.")])),
+        "no code",
+    ),
     "nothing_defined": (
         json.dumps(nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell("x = 1\nprint(x)")])),
         "nothing defined",
