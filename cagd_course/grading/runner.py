@@ -79,9 +79,11 @@ def _package_home(name: str) -> Path:
 def _allowed_path(allow_reference: bool) -> list[str]:
     """The grader's import path minus every folder that would expose the course's packages or files.
 
-    Untrusted runs lose each entry holding `cagd_ref` or `cagd_course` and each entry inside the
-    course folder (hidden suites, reference), except the interpreter's own environment, which may
-    live there (.venv). Trusted runs (validating the reference itself) get the reference's folder.
+    Untrusted runs keep the interpreter's own environment (NumPy lives there, and so does a normal,
+    non-editable install of the course, whose packages the worker refuses to import by name) and
+    lose every other entry that holds `cagd_ref` or `cagd_course` or lies inside the course folder
+    (the checkout with its reference and hidden suites). Trusted runs (validating the reference
+    itself) get the reference's folder first.
     """
     entries = [entry for entry in sys.path if entry and os.path.isdir(entry)]
     if allow_reference:
@@ -95,11 +97,9 @@ def _allowed_path(allow_reference: bool) -> list[str]:
     allowed = []
     for entry in entries:
         folder = Path(entry).resolve()
-        if any(os.path.exists(folder / name) for name in PACKAGES):
-            continue
-        if any(folder.is_relative_to(h) for h in hidden) and not folder.is_relative_to(environment):
-            continue
-        allowed.append(entry)
+        exposes = any(folder.is_relative_to(h) for h in hidden) or any((folder / n).exists() for n in PACKAGES)
+        if folder.is_relative_to(environment) or not exposes:
+            allowed.append(entry)
     return allowed
 
 

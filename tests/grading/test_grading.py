@@ -1,6 +1,7 @@
 """The grading engine: extraction, the isolated worker, comparisons, scoring and the self-check."""
 
 import json
+import sys
 
 import numpy as np
 import pytest
@@ -240,3 +241,21 @@ def test_seeds_depend_on_the_run_seed_and_the_submission_name_only():
 def test_the_worker_reports_its_file_system_confinement():
     outcome = _grade(GOOD)
     assert "landlock ABI" in outcome.run.sandbox, outcome.run.sandbox
+
+
+def test_the_worker_path_keeps_the_environment_and_drops_checkouts(tmp_path, monkeypatch):
+    from cagd_course.grading import runner
+
+    environment = tmp_path / "venv"
+    site = environment / "lib" / "site-packages"
+    checkout = tmp_path / "checkout"
+    other = tmp_path / "other"
+    for folder in (site / "cagd_ref", site / "numpy", checkout / "cagd_ref", checkout / "tests", other):
+        folder.mkdir(parents=True)
+    (checkout / "book.toml").write_text("", encoding="utf-8")
+    monkeypatch.setattr(sys, "prefix", str(environment))
+    monkeypatch.setattr(sys, "path", [str(site), str(checkout), str(checkout / "tests"), str(other)])
+    monkeypatch.setattr(runner, "_package_home", lambda name: site)
+    monkeypatch.setenv("CAGD_COURSE", str(checkout))
+    # A normal install lives in the environment (the worker refuses its imports by name); the checkout goes.
+    assert runner._allowed_path(allow_reference=False) == [str(site), str(other)]
