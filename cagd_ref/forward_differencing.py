@@ -37,17 +37,23 @@ MIN_RASTER_DELTA = 1e-7
 
 
 def forward_difference_table(values) -> list[np.ndarray]:
-    """The difference table of n+1 values f(t0), ..., f(t0 + n δ). Notes ch. 4.
+    """The difference table of n+1 values f(t0), ..., f(t0 + n δ). Notes §4.
 
     values: (n+1,) or (n+1, d). Returns a list of n+1 arrays; row j holds
     Δʲ(t_i) for i = 0..n-j, shape (n+1-j,) or (n+1-j, d). Row 0 is a copy of
-    the values, the last row is the single n-th difference.
+    the values, the last row is the single n-th difference. The notes' cubic
+    at t = 1, ..., 5, with its missing value 8 put in, has constant third
+    differences and a vanishing fourth one:
+
+    >>> from cagd_ref.forward_differencing import forward_difference_table
+    >>> [row.tolist() for row in forward_difference_table([1, 2, 4, 8, 15])]
+    [[1.0, 2.0, 4.0, 8.0, 15.0], [1.0, 2.0, 4.0, 7.0], [1.0, 2.0, 3.0], [1.0, 1.0], [0.0]]
     """
     return difference_table(as_coefficients(values, "values"))
 
 
 def initial_differences(values) -> np.ndarray:
-    """The left column of the difference table: f(t0), Δ¹(t0), ..., Δⁿ(t0), shape (n+1,) or (n+1, d). Notes ch. 4."""
+    """The left column of the difference table: f(t0), Δ¹(t0), ..., Δⁿ(t0), shape (n+1,) or (n+1, d). Notes §4."""
     return np.array([row[0] for row in forward_difference_table(values)])
 
 
@@ -68,7 +74,7 @@ def _stirling_differences(n: int) -> np.ndarray:
 
 
 def power_differences(coeffs, t0: float = 0.0, delta: float = 1.0) -> np.ndarray:
-    """Starting differences f(t0), Δ¹(t0), ..., Δⁿ(t0) of a power-form polynomial for step δ. Notes ch. 4.
+    """Starting differences f(t0), Δ¹(t0), ..., Δⁿ(t0) of a power-form polynomial for step δ. Notes §4.
 
     coeffs: ascending power coefficients (n+1,) or (n+1, d). The polynomial is
     first rewritten in the step count u, q(u) = f(t0 + δ u) = Σ q_k uᵏ with
@@ -97,7 +103,7 @@ def _float_type(dtype) -> np.dtype:
 
 
 def forward_difference_steps(differences, count: int, dtype=np.float64) -> np.ndarray:
-    """March the difference column `count` steps: the values f(t0), ..., f(t0 + (count-1) δ). Notes ch. 4.
+    """March the difference column `count` steps: the values f(t0), ..., f(t0 + (count-1) δ). Notes §4.
 
     differences: the column f(t0), Δ¹(t0), ..., Δⁿ(t0), shape (n+1,) or (n+1, d).
     Each step costs n additions per column and no multiplication. The
@@ -117,18 +123,28 @@ def forward_difference_steps(differences, count: int, dtype=np.float64) -> np.nd
 
 
 def forward_difference_eval(coeffs, t0: float, delta: float, count: int, dtype=np.float64) -> np.ndarray:
-    """Values of a power-form polynomial at t0 + k δ, k = 0..count-1, by forward differencing. Notes ch. 4.
+    """Values of a power-form polynomial at t0 + k δ, k = 0..count-1, by forward differencing. Notes §4.
 
-    coeffs: ascending power coefficients (n+1,) or (n+1, d). The starting
-    differences come from `power_differences`; every further value costs n
-    additions (`forward_difference_steps`). Returns shape (count,) or (count, d).
+    coeffs: ascending power coefficients (n+1,) or (n+1, d); t0, delta:
+    numbers (delta may be zero or negative); count: an integer >= 0. The
+    starting differences come from `power_differences`; every further value
+    costs n additions (`forward_difference_steps`), run in `dtype`. Returns
+    shape (count,) or (count, d). The cubic of the notes' table in power form,
+    (t³ - 3t² + 8t)/6, stepped from t0 = 1 by δ = 1 continues 1, 2, 4, 8, 15:
+
+    >>> from cagd_ref.forward_differencing import forward_difference_eval
+    >>> np.round(forward_difference_eval([0, 4 / 3, -1 / 2, 1 / 6], 1.0, 1.0, 7), 9).tolist()
+    [1.0, 2.0, 4.0, 8.0, 15.0, 26.0, 42.0]
+
+    Ref: J. D. Foley, A. van Dam, S. K. Feiner and J. F. Hughes, Computer Graphics: Principles and Practice,
+    2nd ed., Addison-Wesley, 1990 (forward differences for drawing curves).
     """
     start = power_differences(coeffs, t0, delta)
     return forward_difference_steps(start, count, dtype)
 
 
 def missing_value(values, index: int):
-    """The entry `values[index]` that makes n+1 values those of a polynomial of degree n-1. Notes ch. 4 (example).
+    """The entry `values[index]` that makes n+1 values those of a polynomial of degree n-1. Notes §4 (example).
 
     values: (n+1,) or (n+1, d), n >= 1; whatever stands at `index` is ignored.
     Values of a degree n-1 polynomial have Δⁿ = Σ_i (-1)ⁿ⁻ⁱ C(n, i) f_i = 0, an
@@ -149,7 +165,7 @@ def missing_value(values, index: int):
 
 
 def bezier_by_differences(points, steps: int) -> np.ndarray:
-    """Points P(k / steps), k = 0..steps, of a Bézier curve by forward differencing, shape (steps+1, d). Notes ch. 4.
+    """Points P(k / steps), k = 0..steps, of a Bézier curve by forward differencing, shape (steps+1, d). Notes §4.
 
     points: control points (n+1, d), converted to power form (`bernstein_to_power`)
     and marched with δ = 1 / steps.
@@ -223,7 +239,7 @@ def drift(coeffs, t0: float, delta: float, count: int, dtype=np.float32) -> tupl
     rule in float64 and the largest error over the columns is kept. Returns
     (forward_error, horner_error), each of shape (count,). For dtype float64
     the Horner error is zero by construction and the forward error is the
-    drift against Horner. Notes ch. 4.
+    drift against Horner. Notes §4.
     """
     a = as_coefficients(coeffs)
     kind = _float_type(dtype)

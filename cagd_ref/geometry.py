@@ -32,7 +32,16 @@ CONIC_TYPES = ("ellipse", "parabola", "hyperbola")
 
 
 def projection(p, q) -> np.ndarray:
-    """The projection of vector `p` onto vector `q`: ``(p·q / q·q) q``. Shapes (d,). Notes §1.2."""
+    """The projection of vector `p` onto vector `q`: ``(p·q / q·q) q``. Notes §1.2.
+
+    p, q: vectors of the same shape (d,); `q` must not be the zero vector.
+    Returns shape (d,). The notes' example: p · q = 27 and q · q = 81, so the
+    projection of (3, 2, 1) onto (3, 6, 6) is a third of (3, 6, 6).
+
+    >>> from cagd_ref.geometry import projection
+    >>> projection([3, 2, 1], [3, 6, 6]).tolist()
+    [1.0, 2.0, 2.0]
+    """
     p = as_vector(p, "p")
     q = as_vector(q, "q", dim=p.shape[0])
     qq = q @ q
@@ -42,7 +51,16 @@ def projection(p, q) -> np.ndarray:
 
 
 def triangle_area(p1, p2, p3) -> float:
-    """Area of the triangle p1 p2 p3 (points of shape (2,) or (3,)): half the cross product's length. Notes §1.2."""
+    """Area of the triangle p1 p2 p3: half the length of (p2 - p1) × (p3 - p1). Notes §1.2, eq. (1.4).
+
+    p1, p2, p3: points of one shape, (2,) or (3,). Returns a float >= 0. The
+    notes' example: the edges (1, 3, 4) and (2, 1, 5) have the cross product
+    (11, 3, -5), so the area is sqrt(155)/2.
+
+    >>> from cagd_ref.geometry import triangle_area
+    >>> round(triangle_area([1, 1, 1], [2, 4, 5], [3, 2, 6]), 3)
+    6.225
+    """
     p1 = as_vector(p1, "p1")
     if p1.shape[0] not in (2, 3):
         raise ValueError(f"p1: expected a 2-D or 3-D point, got shape {p1.shape}")
@@ -66,10 +84,19 @@ def _unit_axis(axis_direction) -> np.ndarray:
 def rotate_about_axis(point, axis_point, axis_direction, angle) -> np.ndarray:
     """Rotate 3-D point(s) by `angle` radians about the axis through `axis_point` along `axis_direction`.
 
-    `point` is (3,) or (k, 3); the result has the same shape. The rotation is
-    right-handed about the axis direction (which need not be a unit vector).
-    Vector form of Notes §1.3: C = B + ((P-B)·n) n, u = P - C, v = n × u,
-    P' = C + u cos θ + v sin θ.
+    point: (3,) or (k, 3); the result has the same shape. axis_point,
+    axis_direction: (3,), the direction nonzero but not necessarily a unit
+    vector. angle: radians, right-handed about the axis direction. The vector
+    form of Notes §1.3, eqs. (1.6)-(1.9): C = B + ((P-B)·n) n, u = P - C,
+    v = n × u, P' = C + u cos θ + v sin θ. The notes' example turns (5, 7, 3) a
+    quarter turn about the axis through (1, 1, 1) along (2, 1, 2):
+
+    >>> from cagd_ref.geometry import rotate_about_axis
+    >>> np.round(rotate_about_axis([5, 7, 3], [1, 1, 1], [2, 1, 2], np.pi / 2), 6).tolist()
+    [1.666667, 4.333333, 7.666667]
+
+    Ref: O. Rodrigues, Des lois géométriques qui régissent les déplacements d'un système solide dans l'espace,
+    J. Math. Pures Appl. 5 (1840), 380-440 (the rotation formula that bears his name).
     """
     pts = as_float_array(point, "point")
     if pts.shape[-1:] != (3,) or pts.ndim > 2:
@@ -85,7 +112,21 @@ def rotate_about_axis(point, axis_point, axis_direction, angle) -> np.ndarray:
 
 
 def rotation_matrix(axis_point, axis_direction, angle) -> np.ndarray:
-    """The 4x4 homogeneous matrix of the rotation of `rotate_about_axis` (columns act on (x, y, z, 1)). Notes §1.3.1."""
+    """The 4x4 homogeneous matrix of the rotation of `rotate_about_axis`, acting on columns (x, y, z, 1). Notes §1.3.1.
+
+    axis_point, axis_direction: (3,), the direction nonzero; angle: radians.
+    The upper-left block is cos θ I + sin θ [n]× + (1 - cos θ) n nᵀ, the matrix
+    (1.27) of the notes; the last column keeps the axis point fixed. On the
+    notes' example of §1.3:
+
+    >>> from cagd_ref.geometry import rotation_matrix
+    >>> M = rotation_matrix([1, 1, 1], [2, 1, 2], np.pi / 2)
+    >>> np.round(M @ [5, 7, 3, 1], 6).tolist()
+    [1.666667, 4.333333, 7.666667, 1.0]
+
+    Ref: O. Rodrigues, Des lois géométriques qui régissent les déplacements d'un système solide dans l'espace,
+    J. Math. Pures Appl. 5 (1840), 380-440 (the rotation formula that bears his name).
+    """
     b = as_vector(axis_point, "axis_point", dim=3)
     n = _unit_axis(axis_direction)
     theta = as_scalar(angle, "angle")
@@ -100,7 +141,7 @@ def rotation_matrix(axis_point, axis_direction, angle) -> np.ndarray:
 
 
 def apply_transform(matrix, points) -> np.ndarray:
-    """Apply a 4x4 homogeneous matrix to 3-D point(s) of shape (3,) or (k, 3)."""
+    """Apply a 4x4 homogeneous matrix to 3-D point(s) of shape (3,) or (k, 3); same shape back. Notes §1.3.1."""
     m = as_float_array(matrix, "matrix")
     if m.shape != (4, 4):
         raise ValueError(f"matrix: expected shape (4, 4), got {m.shape}")
@@ -115,9 +156,11 @@ def apply_transform(matrix, points) -> np.ndarray:
 
 
 def affine_point(p0, p1, t0, t1, t) -> np.ndarray:
-    """Point at parameter t of the line with P(t0) = p0, P(t1) = p1: ``((t1-t) p0 + (t-t0) p1) / (t1-t0)``. Notes §1.5.1.
+    """Point at parameter t of the line with P(t0) = p0, P(t1) = p1. Notes §1.5.1, eq. (1.36).
 
-    `t` is a number (result (d,)) or a 1-D array of k values (result (k, d)).
+    The affine form ``((t1-t) p0 + (t-t0) p1) / (t1-t0)``. p0, p1: points of
+    shape (d,); t0 != t1. `t` is a number (result (d,)) or a 1-D array of k
+    values (result (k, d)).
     """
     p0 = as_vector(p0, "p0")
     p1 = as_vector(p1, "p1", dim=p0.shape[0])
@@ -160,12 +203,12 @@ def signed_distance(line, points) -> np.ndarray | float:
 
 
 def join(p, q) -> np.ndarray:
-    """The homogeneous line (a, b, c) through homogeneous points p = (X, Y, W) and q."""
+    """The homogeneous line (a, b, c) through homogeneous points p = (X, Y, W) and q, shape (3,). Notes §1.5.2."""
     return np.cross(as_vector(p, "p", dim=3), as_vector(q, "q", dim=3))
 
 
 def meet(l1, l2) -> np.ndarray:
-    """The homogeneous point (X, Y, W) where lines l1 and l2 cross (W = 0 when they are parallel)."""
+    """The homogeneous point (X, Y, W) where lines l1 and l2 cross (W = 0 when parallel). Notes §1.5.2."""
     return np.cross(as_vector(l1, "l1", dim=3), as_vector(l2, "l2", dim=3))
 
 
@@ -183,10 +226,16 @@ def _classify(discriminant: float, scale: float) -> str:
 
 
 def conic_type(a, b, c, d, e, f) -> str:
-    """'ellipse', 'parabola' or 'hyperbola' for a x² + b xy + c y² + d x + e y + f = 0.
+    """'ellipse', 'parabola' or 'hyperbola' for a x² + b xy + c y² + d x + e y + f = 0. Notes §1.6.
 
-    The type is the number of real points at infinity: the sign of b² - 4ac
-    (negative: ellipse, zero: parabola, positive: hyperbola). Notes §1.6.
+    a, ..., f: numbers, not all of a, b, c zero. The type is the number of real
+    points at infinity: the sign of b² - 4ac (negative: ellipse, zero:
+    parabola, positive: hyperbola), zero meaning within 1e-12 max(|a|, |b|, |c|)².
+    The notes work no numbers here; the unit circle, y = x² and xy = 1:
+
+    >>> from cagd_ref.geometry import conic_type
+    >>> conic_type(1, 0, 1, 0, 0, -1), conic_type(1, 0, 0, 0, -1, 0), conic_type(0, 1, 0, 0, 0, -1)
+    ('ellipse', 'parabola', 'hyperbola')
     """
     for value, name in ((d, "d"), (e, "e"), (f, "f")):
         as_scalar(value, name)

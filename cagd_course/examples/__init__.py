@@ -90,8 +90,11 @@ class NotesExample:
 
 
 def _shown(value) -> str:
+    """A value on one line: arrays and numbers to six digits, lists (ragged tables) item by item."""
     if isinstance(value, np.ndarray):
         return np.array2string(value, precision=6, suppress_small=True, separator=", ").replace("\n", " ")
+    if isinstance(value, list):
+        return "[" + ", ".join(_shown(item) for item in value) + "]"
     return f"{value:.6g}" if isinstance(value, float) else str(value)
 
 

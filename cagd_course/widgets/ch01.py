@@ -11,7 +11,8 @@ from matplotlib.ticker import MaxNLocator
 from cagd_ref._validation import as_vector
 from cagd_ref.geometry import conic_discriminant, conic_type, rotate_about_axis, rotation_matrix
 
-from ..plotting import plot_implicit, plot_vector
+from ..plotting.algebraic import plot_implicit
+from ..plotting.vectors import plot_vector
 from ._base import Explorer, _fmt, _slider, _swatch
 
 __all__ = ["rotation_explorer", "conic_explorer", "RotationExplorer", "ConicExplorer"]
@@ -62,7 +63,8 @@ class RotationExplorer(Explorer):
         n, c = state["axis"], state["center"]
         radius = max(np.linalg.norm(state["original"] - c), 1.0)
         reach = 1.5 * radius + np.linalg.norm(c - self.axis_point)
-        ax.plot(*np.array([self.axis_point - reach * n, self.axis_point + reach * n]).T, color="0.3", linewidth=1, label="axis")
+        axis_ends = np.array([self.axis_point - reach * n, self.axis_point + reach * n])
+        ax.plot(*axis_ends.T, color="0.3", linewidth=1, label="axis")
         plot_vector(ax, self.axis_point, n, label="$\\mathbf{n}$", color="0.2")
         ax.plot(*state["circle"].T, color="C0", linewidth=1, label="circle of rotation")
         ax.plot(*state["arc"].T, color="C3", linewidth=2.5, label=f"θ = {state['angle']:.0f}°")
@@ -121,7 +123,10 @@ class ConicExplorer(Explorer):
 
     def draw(self, ax, state: dict) -> None:
         a, b, c, d, e, f = state["coefficients"]
-        plot_implicit(ax, lambda x, y: a * x * x + b * x * y + c * y * y + d * x + e * y + f, self.box, self.box, label=state["type"])
+        def conic(x, y):
+            return a * x * x + b * x * y + c * y * y + d * x + e * y + f
+
+        plot_implicit(ax, conic, self.box, self.box, label=state["type"])
         ax.axhline(0, color="0.85", linewidth=0.8, zorder=0)
         ax.axvline(0, color="0.85", linewidth=0.8, zorder=0)
         ax.set_title(f"${_conic_equation(state['coefficients'])}$\n"

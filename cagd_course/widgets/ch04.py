@@ -10,13 +10,14 @@ from matplotlib.collections import LineCollection
 from cagd_ref.forward_differencing import bezier_by_differences, drift, find_gaps, pixels_along, raster_delta
 from cagd_ref.polynomials import bernstein_to_power
 
-from ..plotting import bezier_samples, plot_control_polygon
+from ..examples import notes_example
+from ..plotting.curves import bezier_samples, plot_control_polygon
 from ._base import CURVE_SAMPLES, Explorer, _control_points, _slider
 
 __all__ = ["raster_explorer", "drift_explorer", "RasterExplorer", "DriftExplorer"]
 
-# A cubic in pixel coordinates: largest neighbour difference 23, so the notes' δ is 1/69.
-RASTER_CUBIC = np.array([[2.0, 3.0], [10.0, 26.0], [30.0, 28.0], [37.0, 5.0]])
+# The course's cubic in pixel coordinates: largest neighbour difference 23, so the notes' δ is 1/69.
+(RASTER_CUBIC,) = notes_example("04.raster_cubic").args("points")
 # The same shape blown up to nearly 900 pixels wide, where float32 drift becomes visible in pixels.
 DRIFT_CUBIC = 25.0 * RASTER_CUBIC
 PRECISIONS = {"float32": np.float32, "float64": np.float64}

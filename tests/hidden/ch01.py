@@ -1,18 +1,22 @@
 """Hidden grading suite of chapter 1: vectors, triangles, rotations and conics.
 
-Every exercise mixes the worked examples of the notes, hand-picked edge cases,
-a few inputs that must be rejected, and random cases drawn from the generator
-the grader passes in (so a given seed always yields the same cases).
+Every exercise mixes the worked examples of the notes (read from
+cagd_course/examples/ch01.toml), hand-picked edge cases, a few inputs that must
+be rejected, and random cases drawn from the generator the grader passes in (so
+a given seed always yields the same cases). The notes work no conic example, so
+the conic suite starts from the standard ones.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
+from cagd_course.examples import notes_example
 from cagd_course.grading.suite import Case, Exercise, close, exact
 from cagd_ref import geometry
 
 NOTES = "notes example"
+CONICS = "standard conics"
 EDGE = "edge cases"
 MANY = "several points"
 RANDOM = "random"
@@ -27,9 +31,11 @@ def _vec(rng, d, scale=5.0):
 
 
 def projection_cases(rng):
+    example = notes_example("01.projection")
+    p, q = example.args("p", "q")
     cases = [
-        Case(NOTES, ((3, 2, 1), (3, 6, 6)), visible=True),
-        Case(NOTES, ([3.0, 2.0, 1.0], [1.0, 2.0, 2.0]), visible=True),
+        Case(NOTES, (p, q), visible=True),
+        Case(NOTES, (p, example.results["projection"]), visible=True),  # onto the answer: the same answer
         # Parallel, perpendicular, 2-D, a negative multiple, a zero p.
         Case(EDGE, ((2, 4, 6), (1, 2, 3)), visible=True),
         Case(EDGE, ((1, 0, 0), (0, 5, 0)), visible=True),
@@ -54,7 +60,7 @@ def projection_cases(rng):
 
 def triangle_area_cases(rng):
     cases = [
-        Case(NOTES, ((1, 1, 1), (2, 4, 5), (3, 2, 6)), visible=True),
+        Case(NOTES, notes_example("01.triangle_area").args("p1", "p2", "p3"), visible=True),
         Case(EDGE, ((0, 0), (4, 0), (0, 3)), visible=True),
         Case(EDGE, ((0, 0), (0, 3), (4, 0)), visible=True),  # clockwise: area stays positive
         Case(EDGE, ((1, 1, 1), (2, 2, 2), (5, 5, 5)), visible=True),  # collinear
@@ -76,18 +82,20 @@ def triangle_area_cases(rng):
 
 
 def rotate_about_axis_cases(rng):
-    notes = ((5, 7, 3), (1, 1, 1), (2, 1, 2))
+    example = notes_example("01.rotation")
+    point, axis_point, direction, angle = example.args("point", "axis_point", "axis_direction", "angle")
+    notes = (point, axis_point, direction)
     cases = [
-        Case(NOTES, notes + (np.pi / 2,), visible=True),
-        Case(NOTES, ((5, 7, 3), (1, 1, 1), (2 / 3, 1 / 3, 2 / 3), np.pi / 2), visible=True),
-        Case(EDGE, notes + (-np.pi / 2,), visible=True),  # negative angle turns the other way
+        Case(NOTES, notes + (angle,), visible=True),
+        Case(NOTES, (point, axis_point, example.results["n"], angle), visible=True),  # the notes' unit axis n
+        Case(EDGE, notes + (-angle,), visible=True),  # negative angle turns the other way
         Case(EDGE, notes + (0.0,), visible=True),
         Case(EDGE, notes + (2 * np.pi,), visible=True),
         Case(EDGE, notes + (np.pi,), visible=True),
-        Case(EDGE, ((3, 2, 3), (1, 1, 1), (2, 1, 2), 1.0), visible=True),  # point on the axis
+        Case(EDGE, (axis_point + direction, axis_point, direction, 1.0), visible=True),  # point on the axis
         Case(EDGE, ((1, 0, 0), (0, 0, 0), (0, 0, 10), np.pi / 3), visible=True),
         Case(EDGE, ((1, 0, 0), (0, 0, 0), (0, 0, -1), np.pi / 3), visible=True),
-        Case(MANY, (np.array([[5.0, 7, 3], [1, 1, 1], [0, 0, 0]]), (1, 1, 1), (2, 1, 2), np.pi / 2)),
+        Case(MANY, (np.array([point, axis_point, np.zeros(3)]), axis_point, direction, angle)),
         Case(MANY, (_vec(rng, (6, 3)), _vec(rng, 3), _vec(rng, 3), 0.7)),
         Case(MANY, (_vec(rng, (1, 3)), (0, 0, 0), (1, 1, 1), -2.0)),
     ]
@@ -95,9 +103,9 @@ def rotate_about_axis_cases(rng):
         angle = float(rng.uniform(-2 * np.pi, 2 * np.pi))
         cases.append(Case(RANDOM, (_vec(rng, 3), _vec(rng, 3), _vec(rng, 3), angle)))
     cases += [
-        Case(BAD, ((5, 7, 3), (1, 1, 1), (0, 0, 0), 1.0)),
-        Case(BAD, ((5, 7), (1, 1), (2, 1), 1.0)),
-        Case(BAD, ((5, 7, 3), (1, 1, 1), (2, 1), 1.0)),
+        Case(BAD, (point, axis_point, np.zeros(3), 1.0)),
+        Case(BAD, (point[:2], axis_point[:2], direction[:2], 1.0)),
+        Case(BAD, (point, axis_point, direction[:2], 1.0)),
     ]
     return cases
 
@@ -106,9 +114,11 @@ def rotate_about_axis_cases(rng):
 
 
 def rotation_matrix_cases(rng):
+    example = notes_example("01.rotation")
+    axis_point, direction, angle = example.args("axis_point", "axis_direction", "angle")
     cases = [
-        Case(NOTES, ((1, 1, 1), (2, 1, 2), np.pi / 2), visible=True),
-        Case(NOTES, ((1, 1, 1), (2 / 3, 1 / 3, 2 / 3), np.pi / 2), visible=True),
+        Case(NOTES, (axis_point, direction, angle), visible=True),
+        Case(NOTES, (axis_point, example.results["n"], angle), visible=True),
         Case(EDGE, ((0, 0, 0), (0, 0, 1), np.pi / 2), visible=True),
         Case(EDGE, ((0, 0, 0), (0, 0, 1), -np.pi / 2), visible=True),
         Case(EDGE, ((1, 2, 3), (1, 0, 0), 0.0), visible=True),
@@ -119,8 +129,8 @@ def rotation_matrix_cases(rng):
         angle = float(rng.uniform(-2 * np.pi, 2 * np.pi))
         cases.append(Case(RANDOM, (_vec(rng, 3), _vec(rng, 3), angle)))
     cases += [
-        Case(BAD, ((1, 1, 1), (0, 0, 0), 1.0)),
-        Case(BAD, ((1, 1), (2, 1, 2), 1.0)),
+        Case(BAD, (axis_point, np.zeros(3), 1.0)),
+        Case(BAD, (axis_point[:2], direction, 1.0)),
     ]
     return cases
 
@@ -130,11 +140,11 @@ def rotation_matrix_cases(rng):
 
 def conic_type_cases(rng):
     cases = [
-        Case(NOTES, (1, 0, 1, 0, 0, -1), visible=True),  # unit circle
-        Case(NOTES, (0, 1, 0, 0, 0, -1), visible=True),  # xy = 1
-        Case(NOTES, (1, 0, 0, 0, -1, 0), visible=True),  # y = x²
-        Case(NOTES, (1, 0, -1, 0, 0, -1), visible=True),  # x² - y² = 1
-        Case(NOTES, (4, 0, 9, 0, 0, -36), visible=True),  # an ellipse with axes 3 and 2
+        Case(CONICS, (1, 0, 1, 0, 0, -1), visible=True),  # unit circle
+        Case(CONICS, (0, 1, 0, 0, 0, -1), visible=True),  # xy = 1
+        Case(CONICS, (1, 0, 0, 0, -1, 0), visible=True),  # y = x²
+        Case(CONICS, (1, 0, -1, 0, 0, -1), visible=True),  # x² - y² = 1
+        Case(CONICS, (4, 0, 9, 0, 0, -36), visible=True),  # an ellipse with axes 3 and 2
         # b² = 4ac exactly, with nonzero cross terms, and the sign of the linear terms irrelevant.
         Case(EDGE, (1, 2, 1, 3, -1, 0), visible=True),
         Case(EDGE, (1, -4, 4, 0, 1, 0), visible=True),

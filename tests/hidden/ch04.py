@@ -1,8 +1,10 @@
 """Hidden grading suite of chapter 4: forward differencing.
 
-Fixed cases reuse the numbers of the notes (the cubic with values 1, 2, 4, 8, 15
-at t = 1..5, the degree 1, 2 and 3 loops, a degree-four table); edge cases probe
-a single value, degree 0, zero and negative steps, count 0 and 1, and several
+Fixed cases reuse the notes' worked example (the cubic with values 1, 2, 4, 8, 15
+at t = 1..5, read from cagd_course/examples/ch04.toml with the course's own
+examples around it: that cubic in power form, a degree-four table) and the
+notes' loops of degree 1, 2 and 3 on numbers of our own; edge cases probe a
+single value, degree 0, zero and negative steps, count 0 and 1, and several
 polynomials at once as the columns of an (n+1, d) array; random cases come from
 the generator the grader passes in.
 """
@@ -11,6 +13,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from cagd_course.examples import notes_example
 from cagd_course.grading.suite import Case, Exercise, Raises, close
 from cagd_ref import forward_differencing
 
@@ -19,8 +22,6 @@ EDGE = "edge cases"
 RANDOM = "random"
 BAD = "bad input"
 
-NOTES_VALUES = [1.0, 2.0, 4.0, 8.0, 15.0]  # the notes' cubic at t = 1..5, with the missing 8 filled in
-NOTES_CUBIC = [0.0, 4 / 3, -1 / 2, 1 / 6]  # the same cubic in power form: (t³ - 3t² + 8t) / 6
 CURVE = [(0.0, 1.0), (1.0, 0.0), (2.0, -1.0), (3.0, 0.5)]  # x(t) and y(t) of a cubic curve, power form
 
 
@@ -55,9 +56,11 @@ def rows_close(rtol: float, atol: float):
 
 def table_cases(rng):
     cases = [
-        Case(NOTES, (NOTES_VALUES,), visible=True),
-        Case(NOTES, ([0.0, 1.0, 16.0, 81.0, 256.0],), visible=True),  # t⁴ at 0..4: a degree-four table
-        Case(NOTES, ([1.0, 2.0, 4.0, 8.0, 15.0, 26.0, 42.0],), visible=True),
+        # The notes' cubic at t = 1..5 with the missing 8 filled in; t⁴ at 0..4, our stand-in for the
+        # notes' degree-four table; the cubic continued to t = 7.
+        Case(NOTES, (notes_example("04.missing_value").results["values"].copy(),), visible=True),
+        Case(NOTES, notes_example("04.quartic_table").args("values"), visible=True),
+        Case(NOTES, (notes_example("04.cubic_power_form").results["values"].copy(),), visible=True),
         Case(EDGE, ([3.5],), visible=True),  # one value: a table of one row
         Case(EDGE, ([2.0, -5.0],), visible=True),
         Case(EDGE, ([4.0, 4.0, 4.0],), visible=True),
@@ -80,7 +83,9 @@ def table_cases(rng):
 
 def eval_cases(rng):
     cases = [
-        Case(NOTES, (NOTES_CUBIC, 1.0, 1.0, 7), visible=True),  # 1, 2, 4, 8, 15, 26, 42
+        # The notes' cubic in power form from t0 = 1: 1, 2, 4, 8, 15, 26, 42; then the notes' loops of
+        # degree 1, 2 and 3 on coefficients of our own.
+        Case(NOTES, notes_example("04.cubic_power_form").args("coeffs", "t0", "delta", "count"), visible=True),
         Case(NOTES, ([2.0, 3.0], 0.0, 0.25, 5), visible=True),  # degree 1: one addition per step
         Case(NOTES, ([1.0, -2.0, 0.5], 0.0, 0.1, 11), visible=True),  # degree 2
         Case(NOTES, ([0.5, 1.0, -3.0, 2.0], 0.0, 1 / 16, 17), visible=True),  # degree 3

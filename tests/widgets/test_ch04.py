@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 from cagd_course import widgets
+from cagd_course.examples import notes_example
 from cagd_course.widgets import ch04
 from cagd_ref.bezier import de_casteljau
 from cagd_ref.forward_differencing import drift, raster_delta, rasterize
@@ -33,6 +34,15 @@ def test_raster_explorer_starts_gap_free_at_the_notes_bound():
     assert state["steps"] == 36 and state["gap_count"] == 0
     np.testing.assert_array_equal(state["pixels"], rasterize(CUBIC))
     assert "no gaps" in explorer.readout.value
+
+
+def test_raster_explorer_starts_from_the_course_cubic_of_the_examples():
+    example = notes_example("04.raster_cubic")
+    explorer = widgets.raster_explorer()
+    np.testing.assert_array_equal(explorer.points, example.inputs["points"])
+    assert explorer.state["bound"] == pytest.approx(example.results["delta"])
+    assert explorer.state["steps"] == example.results["steps"] and explorer.state["gap_count"] == 0
+    np.testing.assert_array_equal(widgets.drift_explorer().points, 25 * example.inputs["points"])
 
 
 def test_raster_explorer_points_pixels_and_gaps_for_a_large_step():

@@ -1,4 +1,7 @@
-"""Fills only the 3x3 rotation block and leaves the last column (0, 0, 0, 1): rotates about a parallel axis through the origin."""
+"""Fills only the 3x3 rotation block and leaves the last column (0, 0, 0, 1).
+
+It rotates about a parallel axis through the origin.
+"""
 import numpy as np
 
 
