@@ -29,6 +29,7 @@ __all__ = [
     "bernstein",
     "bernstein_matrix",
     "de_casteljau",
+    "de_casteljau_plain",
     "de_casteljau_triangle",
     "subdivide",
     "elevate",
@@ -62,7 +63,19 @@ def _local_parameter(t, interval) -> tuple[np.ndarray, bool]:
 
 
 def bernstein(i: int, n: int, t):
-    """The Bernstein polynomial B_i^n(t) = C(n, i) (1-t)^(n-i) t^i; float for a number t, (k,) for an array. Notes §2.1."""
+    """The Bernstein polynomial B_i^n(t) = C(n, i) (1-t)^(n-i) t^i. Notes §2.1.
+
+    i, n: integers with 0 <= i <= n. t: a number -> float; a 1-D array of k
+    values -> (k,). Any real t is allowed (outside [0, 1] the formula extends).
+
+    The cubic ones, B_0^3 = (1-t)³, B_1^3 = 3t(1-t)², B_2^3 = 3t²(1-t), B_3^3 = t³, at t = 1/2:
+
+    >>> from cagd_ref.bezier import bernstein
+    >>> [bernstein(i, 3, 0.5) for i in range(4)]
+    [0.125, 0.375, 0.375, 0.125]
+    >>> bernstein(1, 3, [0.0, 0.25, 1.0]).tolist()
+    [0.0, 0.421875, 0.0]
+    """
     n = as_count(n, "n")
     i = as_count(i, "i")
     if i > n:
@@ -73,12 +86,16 @@ def bernstein(i: int, n: int, t):
 
 
 def bernstein_matrix(n: int, t) -> np.ndarray:
-    """All degree-n Bernstein polynomials at k parameters: shape (k, n+1), rows sum to one. Notes §2.1."""
+    """All degree-n Bernstein polynomials B_0^n..B_n^n at t; each row sums to one. Notes §2.1.
+
+    t: a number -> (n+1,); a 1-D array of k values -> (k, n+1).
+    """
     n = as_count(n, "n")
-    ts, _ = as_parameter(t)
+    ts, scalar = as_parameter(t)
     i = np.arange(n + 1)
     binomials = np.array([comb(n, j) for j in i], dtype=float)
-    return binomials * (1 - ts[:, None]) ** (n - i) * ts[:, None] ** i
+    values = binomials * (1 - ts[:, None]) ** (n - i) * ts[:, None] ** i
+    return values[0] if scalar else values
 
 
 def de_casteljau_triangle(points, t) -> list[np.ndarray]:
@@ -122,13 +139,53 @@ def _in_blocks(evaluator):
     return in_blocks
 
 
+def de_casteljau_plain(points, t) -> np.ndarray:
+    """The de Casteljau algorithm in its plain textbook form (the teaching form the chapter shows). Notes §2.3.
+
+    points: (n+1, d). t: a number -> (d,), or a 1-D array of k values -> (k, d);
+    any real t (outside [0, 1] the curve is extrapolated). Every parameter
+    gets its own copy of the control polygon, and each of the n rounds of the
+    triangle (2.4), P_i <- (1-t) P_i + t P_(i+1), replaces all copies by the
+    polygon one point shorter.
+    `de_casteljau` computes the same points, tuned for very many parameters.
+
+    >>> from cagd_ref.bezier import de_casteljau_plain
+    >>> cubic = [(2, 1), (4, 5), (8, 6), (9, 2)]      # the cubic of the notes' hodograph table, §2.7
+    >>> de_casteljau_plain(cubic, 0.5).tolist()
+    [5.875, 4.5]
+
+    Ref: P. de Casteljau, Outillages méthodes calcul, André Citroën Automobiles, Paris, 1959;
+    G. Farin, Curves and Surfaces for CAGD: A Practical Guide, 5th ed., Morgan Kaufmann, 2002.
+    """
+    pts = as_points(points)
+    ts, scalar = as_parameter(t)
+    tau = ts[:, None, None]  # one parameter per copy of the polygon
+    level = np.broadcast_to(pts, (len(ts),) + pts.shape)  # (k, n+1, d)
+    while level.shape[1] > 1:
+        level = (1 - tau) * level[:, :-1] + tau * level[:, 1:]
+    result = level[:, 0].copy()
+    return result[0] if scalar else result
+
+
 @_in_blocks
 def de_casteljau(points, t) -> np.ndarray:
-    """Point(s) of the Bézier curve on [0, 1] by repeated linear interpolation. Notes §2.3.
+    """Point(s) of the Bézier curve on [0, 1] by repeated linear interpolation, tuned for many parameters. Notes §2.3.
 
-    points: (n+1, d). t: a number -> (d,), or a 1-D array of k values -> (k, d).
-    All k parameters go through the triangle at once (very long arrays a
-    block at a time, see `_in_blocks`: that only makes it faster).
+    points: (n+1, d), any degree n >= 0 and dimension d >= 1. t: a number ->
+    (d,), or a 1-D array of k values -> (k, d); t outside [0, 1] extrapolates.
+    It computes what `de_casteljau_plain` computes (the teaching form), with
+    all k parameters in place in coordinate-major arrays, and very long
+    arrays a block at a time (see `_in_blocks`): that only makes it faster.
+
+    >>> from cagd_ref.bezier import de_casteljau
+    >>> cubic = [(2, 1), (4, 5), (8, 6), (9, 2)]      # the cubic of the notes' hodograph table, §2.7
+    >>> de_casteljau(cubic, 0.5).tolist()
+    [5.875, 4.5]
+    >>> de_casteljau(cubic, [0.0, 1.0]).tolist()      # the curve interpolates its end points
+    [[2.0, 1.0], [9.0, 2.0]]
+
+    Ref: P. de Casteljau, Outillages méthodes calcul, André Citroën Automobiles, Paris, 1959;
+    G. Farin, Curves and Surfaces for CAGD: A Practical Guide, 5th ed., Morgan Kaufmann, 2002.
     """
     pts = as_points(points)
     ts, scalar = as_parameter(t)
@@ -154,7 +211,10 @@ MAX_NESTED_DEGREE = 50
 
 
 def _curve_points(pts: np.ndarray, ts: np.ndarray) -> np.ndarray:
-    """Σ B_i^n(t) P_i at k parameters, (k, d): the nested Bernstein form (O(n) per point), or de Casteljau at high degree."""
+    """Σ B_i^n(t) P_i at k parameters, (k, d): the nested Bernstein form (O(n) per point).
+
+    Above MAX_NESTED_DEGREE it runs the de Casteljau triangle instead.
+    """
     if len(pts) - 1 > MAX_NESTED_DEGREE:
         return de_casteljau(pts, ts)
     return bernstein_horner(pts, ts)
@@ -163,9 +223,19 @@ def _curve_points(pts: np.ndarray, ts: np.ndarray) -> np.ndarray:
 def subdivide(points, t=0.5) -> tuple[np.ndarray, np.ndarray]:
     """Split a Bézier curve at parameter t into two curves of the same degree. Notes §2.3.
 
-    Returns (left, right), each (n+1, d): left covers [0, t] and right [t, 1],
-    each reparametrised to [0, 1]. For t outside [0, 1] the two pieces extend
-    the curve (the notes' subdivision at τ = 2).
+    points: (n+1, d); t: a number. Returns (left, right), each (n+1, d): left
+    covers [0, t] and right [t, 1], each reparametrised to [0, 1]. They are
+    the two outer edges of the de Casteljau triangle. For t outside [0, 1]
+    the two pieces extend the curve (the notes' subdivision at τ = 2).
+
+    >>> from cagd_ref.bezier import subdivide
+    >>> left, right = subdivide([(2, 1), (4, 5), (8, 6), (9, 2)], 0.5)   # the notes' cubic of §2.7
+    >>> left.tolist()
+    [[2.0, 1.0], [3.0, 3.0], [4.5, 4.25], [5.875, 4.5]]
+    >>> right.tolist()
+    [[5.875, 4.5], [7.25, 4.75], [8.5, 4.0], [9.0, 2.0]]
+
+    Ref: G. Farin, Curves and Surfaces for CAGD: A Practical Guide, 5th ed., Morgan Kaufmann, 2002.
     """
     levels = de_casteljau_triangle(points, t)
     left = np.array([level[0] for level in levels])
@@ -176,7 +246,15 @@ def subdivide(points, t=0.5) -> tuple[np.ndarray, np.ndarray]:
 def elevate(points, times: int = 1) -> np.ndarray:
     """Raise the degree by one (`times` times) without changing the curve: (n+1, d) -> (n+1+times, d). Notes §2.4.
 
-    P*_i = α_i P_{i-1} + (1 - α_i) P_i with α_i = i / (n+1).
+    P*_i = α_i P_{i-1} + (1 - α_i) P_i with α_i = i / (n+1) (2.8); for a cubic
+    α = 0, 1/4, 1/2, 3/4, 1, so P*_1 = P0/4 + 3 P1/4 and so on.
+
+    >>> from cagd_ref.bezier import elevate
+    >>> elevate([(2, 1), (4, 5), (8, 6), (9, 2)]).tolist()          # the notes' cubic of §2.7
+    [[2.0, 1.0], [3.5, 4.0], [6.0, 5.5], [8.25, 5.0], [9.0, 2.0]]
+
+    Ref: A. R. Forrest, Interactive interpolation and approximation by Bézier polynomials,
+    The Computer Journal 15(1), 1972.
     """
     pts = as_points(points)
     times = as_count(times, "times")
@@ -192,7 +270,16 @@ def elevate(points, times: int = 1) -> np.ndarray:
 def hodograph(points, interval=(0, 1)) -> np.ndarray:
     """Control points of the first derivative curve: n/(t1-t0) (P_{i+1} - P_i), shape (n, d). Notes §2.7.
 
-    The derivative of a degree-0 curve is the zero curve, returned as one zero point.
+    points: (n+1, d) of a curve over interval = (t0, t1). The derivative of a
+    degree-0 curve is the zero curve, returned as one zero point (1, d).
+    The notes' table for the cubic (2, 1), (4, 5), (8, 6), (9, 2) over [0, 1/2]:
+
+    >>> from cagd_ref.bezier import hodograph
+    >>> first = hodograph([(2, 1), (4, 5), (8, 6), (9, 2)], (0, 0.5))
+    >>> first.tolist()
+    [[12.0, 24.0], [24.0, 6.0], [6.0, -24.0]]
+    >>> hodograph(first, (0, 0.5)).tolist()
+    [[48.0, -72.0], [-72.0, -120.0]]
     """
     pts = as_points(points)
     t0, t1 = as_interval(interval)
@@ -203,14 +290,31 @@ def hodograph(points, interval=(0, 1)) -> np.ndarray:
 
 
 def to_homogeneous(points, weights) -> np.ndarray:
-    """Lift rational control points to homogeneous ones w_i (x_i, 1): (n+1, d) -> (n+1, d+1). Notes §2.9."""
+    """Lift rational control points to homogeneous ones w_i (x_i, 1): (n+1, d) -> (n+1, d+1). Notes §2.9.
+
+    weights: (n+1,), none of them zero (negative ones are allowed). The
+    rational cubic of the notes' basis-conversion example (chapter 3):
+
+    >>> from cagd_ref.bezier import to_homogeneous
+    >>> to_homogeneous([(1, 2), (3, 4), (4, 3), (3, 1)], [1, 3, 1, 2]).tolist()
+    [[1.0, 2.0, 1.0], [9.0, 12.0, 3.0], [4.0, 3.0, 1.0], [6.0, 2.0, 2.0]]
+    """
     pts = as_points(points)
     w = as_weights(weights, len(pts))
     return np.hstack([pts * w[:, None], w[:, None]])
 
 
 def from_homogeneous(homogeneous) -> tuple[np.ndarray, np.ndarray]:
-    """Project homogeneous points back: (n+1, d+1) -> (points (n+1, d), weights (n+1,)). Notes §2.9."""
+    """Project homogeneous points back: (n+1, d+1) -> (points (n+1, d), weights (n+1,)). Notes §2.9.
+
+    The last column holds the weights, none of which may be zero (a point at
+    infinity). The notes' table of chapter 3, read as a rational cubic:
+
+    >>> from cagd_ref.bezier import from_homogeneous
+    >>> points, weights = from_homogeneous([(1.0, 2.0, 1.0), (9.0, 12.0, 3.0), (4.0, 3.0, 1.0), (6.0, 2.0, 2.0)])
+    >>> points.tolist(), weights.tolist()
+    ([[1.0, 2.0], [3.0, 4.0], [4.0, 3.0], [3.0, 1.0]], [1.0, 3.0, 1.0, 2.0])
+    """
     h = as_points(homogeneous, "homogeneous")
     if h.shape[1] < 2:
         raise ValueError(f"homogeneous: expected at least 2 columns (coordinates and weight), got shape {h.shape}")
@@ -234,6 +338,16 @@ def evaluate(points, t, weights=None, interval=(0, 1)) -> np.ndarray:
     points: (n+1, d); weights: None or (n+1,). t: a number -> (d,), or k values -> (k, d).
     A rational curve is evaluated on its homogeneous control points and projected.
     The sum (2.2) is formed in nested form (see `_curve_points`), O(n) per point.
+
+    >>> from cagd_ref.bezier import evaluate
+    >>> cubic = [(2, 1), (4, 5), (8, 6), (9, 2)]                # the notes' cubic of §2.7
+    >>> evaluate(cubic, 0.5).tolist()
+    [5.875, 4.5]
+    >>> evaluate(cubic, 7.0, interval=(5, 9)).tolist()          # §2.13: P over [0, 1] is Q(5 + 4t) over [5, 9]
+    [5.875, 4.5]
+    >>> quarter = [(1, 0), (1, 1), (0, 1)]                      # §2.12: weights 1, cos(θ/2), 1 for θ = π/2
+    >>> np.round(evaluate(quarter, 0.5, weights=[1, np.sqrt(2) / 2, 1]), 6).tolist()
+    [0.707107, 0.707107]
     """
     pts = as_points(points)
     tau, scalar = _local_parameter(t, interval)
@@ -292,8 +406,17 @@ def signed_curvature(points, t, weights=None) -> np.ndarray | float:
 def curvature(points, t, weights=None) -> np.ndarray | float:
     """Curvature |P' × P''| / |P'|³ of a (rational) Bézier curve in any dimension d >= 2. Notes §2.9.3.
 
-    points: (n+1, d). Returns a float for a number t, (k,) for k values.
-    Where the speed |P'| is zero (a cusp) the curvature is reported as infinite.
+    points: (n+1, d); weights: None or (n+1,). Returns a float for a number t,
+    (k,) for k values. Where the speed |P'| is zero (a cusp) the curvature is
+    reported as infinite. The notes' example of (2.13): a rational quadratic
+    with weights (1, 2, 4), first leg a = 5 and height h = 4 (the points were
+    lost in the notes; these have that a and h) has κ(0) = 2/25:
+
+    >>> from cagd_ref.bezier import curvature
+    >>> round(curvature([(0, 0), (5, 0), (8, 4)], 0.0, weights=[1, 2, 4]), 12)
+    0.08
+    >>> np.round(curvature([(1, 0), (1, 1), (0, 1)], [0.0, 0.5], [1, np.sqrt(2) / 2, 1]), 12).tolist()   # unit circle
+    [1.0, 1.0]
     """
     pts = as_points(points)
     if pts.shape[1] < 2:
@@ -425,7 +548,7 @@ def explicit_bezier(coeffs, interval=(0, 1)) -> np.ndarray:
 
 
 def explicit_rational_bezier(coeffs, weights) -> tuple[np.ndarray, np.ndarray]:
-    """The explicit rational curve y = Σ w_i y_i B_i^n / Σ w_i B_i^n on [0, 1] as a degree n+1 rational Bézier curve. Notes §2.15.
+    """The explicit rational curve y = Σ w_i y_i B_i^n / Σ w_i B_i^n on [0, 1] as a rational Bézier curve. Notes §2.15.
 
     x = t must share the denominator, so x = t Σ w_i B_i^n / Σ w_i B_i^n has
     degree n+1 and y is degree-elevated to match. Returns (points (n+2, 2), weights (n+2,)).

@@ -26,9 +26,11 @@ class Continuity:
 
 
 def curvature_vector(first, second) -> np.ndarray:
-    """Curvature vector κN = (a |v|² - (a·v) v) / |v|⁴ from velocity v and acceleration a, each (k, d) or (d,).
+    """Curvature vector κN = (a |v|² - (a·v) v) / |v|⁴ from velocity v and acceleration a. Notes §2.10, §2.11.
 
-    The result is (k, d) (one row for a single pair). The velocity must not vanish.
+    first, second: (k, d) or (d,) each. The result is (k, d) (one row for a
+    single pair); it points to the centre of curvature, whose agreement is G2.
+    The velocity must not vanish.
     """
     v = np.atleast_2d(as_float_array(first, "first"))
     a = np.atleast_2d(as_float_array(second, "second"))
@@ -49,7 +51,9 @@ def _close(x: np.ndarray, y: np.ndarray, scale: float, tol: float) -> bool:
     return bool(np.linalg.norm(x - y) <= tol * size)
 
 
-def continuity(p, q, p_interval=(0, 1), q_interval=(1, 2), p_weights=None, q_weights=None, tol: float = 1e-9) -> Continuity:
+def continuity(
+    p, q, p_interval=(0, 1), q_interval=(1, 2), p_weights=None, q_weights=None, tol: float = 1e-9
+) -> Continuity:
     """Parametric order C0..C3 and geometric order G0..G2 at the joint P(end) = Q(start). Notes §2.10.
 
     p, q: control points (m+1, d), (n+1, d), each over its own parameter interval

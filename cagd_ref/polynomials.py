@@ -20,6 +20,7 @@ from ._validation import as_coefficients, as_count, as_interval, as_parameter, a
 __all__ = [
     "horner",
     "bernstein_horner",
+    "bernstein_horner_plain",
     "evaluation_cost",
     "difference_table",
     "substitute_affine",
@@ -67,11 +68,16 @@ def _finish(values: np.ndarray, scalar: bool):
 
 
 def substitute_affine(coeffs: ArrayLike, shift: float, scale: float) -> np.ndarray:
-    """Power coefficients of q(u) = p(shift + scale u) from those of p, same shape ((n+1,) or (n+1, d)). Notes ch. 3-4.
+    """Power coefficients of q(u) = p(shift + scale u) from those of p, same shape. Notes §2.13, §3.3.
 
-    Horner's scheme again, but on polynomials: q starts as a_n and is
-    multiplied by the linear factor (shift + scale u) before each lower
-    coefficient is added.
+    coeffs: (n+1,) or (n+1, d) ascending power coefficients. Horner's scheme
+    again, but on polynomials: q starts as a_n and is multiplied by the linear
+    factor (shift + scale u) before each lower coefficient is added. The
+    notes' example of §2.13, P(t) = (t² + t - 1, 2t² - t + 3) with t = 2s + 1:
+
+    >>> from cagd_ref.polynomials import substitute_affine
+    >>> substitute_affine([(-1, 3), (1, -1), (1, 2)], 1.0, 2.0).tolist()   # Q(s) = (4s² + 6s + 1, 8s² + 6s + 4)
+    [[1.0, 4.0], [6.0, 6.0], [4.0, 8.0]]
     """
     coeffs = as_coefficients(coeffs)
     shift, scale = as_scalar(shift, "shift"), as_scalar(scale, "scale")
@@ -86,10 +92,21 @@ def substitute_affine(coeffs: ArrayLike, shift: float, scale: float) -> np.ndarr
 
 
 def horner(coeffs: ArrayLike, t: ArrayLike) -> float | np.ndarray:
-    """Evaluate a0 + a1 t + ... + an tⁿ in nested form, n multiplies and n adds per point. Notes ch. 3.
+    """Evaluate a0 + a1 t + ... + an tⁿ in nested form, n multiplies and n adds per point. Notes §3.1.
 
     coeffs: ascending power coefficients (n+1,) or (n+1, d). t: a number ->
     float or (d,); a 1-D array of k values -> (k,) or (k, d).
+    The homogeneous (X, Y, W) power form of the notes' rational cubic (§3.3), one column each:
+
+    >>> from cagd_ref.polynomials import horner
+    >>> power = [(1, 2, 1), (24, 30, 6), (-39, -57, -12), (20, 27, 7)]
+    >>> horner(power, 0.5).tolist()
+    [5.75, 6.125, 1.875]
+    >>> horner([1, 24, -39, 20], [0.0, 1.0]).tolist()                # X alone: X(0) = 1, X(1) = 6
+    [1.0, 6.0]
+
+    Ref: W. G. Horner, A new method of solving numerical equations of all orders, by continuous
+    approximation, Philosophical Transactions of the Royal Society of London 109, 1819.
     """
     a = as_coefficients(coeffs)
     ts, scalar = as_parameter(t)
@@ -100,15 +117,54 @@ def horner(coeffs: ArrayLike, t: ArrayLike) -> float | np.ndarray:
     return _finish(value, scalar)
 
 
+def bernstein_horner_plain(coeffs: ArrayLike, t: ArrayLike) -> float | np.ndarray:
+    """The nested Bernstein form in its plain teaching form (what chapter 3 shows), on [0, 1]. Notes §3.2.
+
+    With s = 1 - t and c_i = C(n, i) b_i the sum Σ b_i B_i^n(t) is
+    (((c0 s + c1 t) s + c2 t²) s + ...) s + cn tⁿ: a running power tⁱ and one
+    factor s per step, O(n) per point. coeffs: Bernstein coefficients (n+1,)
+    or (n+1, d); shapes as in `horner`. `bernstein_horner` computes the same
+    values, tuned for very many parameters, and also over any interval.
+
+    >>> from cagd_ref.polynomials import bernstein_horner_plain
+    >>> bernstein_horner_plain([1, 9, 4, 6], 0.5)      # X of the notes' rational cubic (§3.3) at t = 1/2
+    5.75
+
+    Ref: L. L. Schumaker and W. Volk, Efficient evaluation of multivariate polynomials, CAGD 3, 1986.
+    """
+    b = as_coefficients(coeffs)
+    ts, scalar = as_parameter(t)
+    n = len(b) - 1
+    c = b * _column(_binomials(n), b)  # C(n, i) b_i, once per polynomial
+    tt = _column(ts, b)
+    s = 1 - tt
+    value, power = _constant(c[0], len(ts)), np.ones_like(tt)
+    for coefficient in c[1:]:
+        power = power * tt  # tⁱ
+        value = value * s + coefficient * power  # one more factor s on every earlier term, then + c_i tⁱ
+    return _finish(value, scalar)
+
+
 def bernstein_horner(coeffs: ArrayLike, t: ArrayLike, interval: ArrayLike = (0, 1)) -> float | np.ndarray:
-    """Evaluate Σ b_i B_i^n(u) in the nested Bernstein form, O(n) per point. Notes ch. 3.
+    """Evaluate Σ b_i B_i^n(u) in the nested Bernstein form, O(n) per point, tuned for many parameters. Notes §3.2.
 
     With s = 1 - u the sum is (((c0 s + c1 u) s + c2 u²) s + ...) s + cn uⁿ,
     where c_i = C(n, i) b_i is formed once per polynomial; each point then
     costs 3n multiplies and n + 1 adds (see `evaluation_cost`), against the
     O(n²) of the de Casteljau triangle. coeffs: Bernstein coefficients (n+1,)
     or (n+1, d) on `interval`; u = (t - t0) / (t1 - t0). Shapes as in `horner`.
+    It computes what `bernstein_horner_plain` (the teaching form) computes, in
+    place, coordinate-major and a block of parameters at a time.
     This is also how `cagd_ref.bezier.evaluate` computes curve points.
+    The notes' rational cubic (§3.3), homogeneous (X, Y, W) Bernstein coefficients:
+
+    >>> from cagd_ref.polynomials import bernstein_horner
+    >>> bernstein_horner([(1.0, 2.0, 1.0), (9.0, 12.0, 3.0), (4.0, 3.0, 1.0), (6.0, 2.0, 2.0)], 0.5).tolist()
+    [5.75, 6.125, 1.875]
+    >>> bernstein_horner([1, 9, 4, 6], [2.0, 4.0], interval=(2, 4)).tolist()   # the same X over [2, 4]
+    [1.0, 6.0]
+
+    Ref: L. L. Schumaker and W. Volk, Efficient evaluation of multivariate polynomials, CAGD 3, 1986.
     """
     b = as_coefficients(coeffs)
     ts, scalar = as_parameter(t)
@@ -136,7 +192,7 @@ def bernstein_horner(coeffs: ArrayLike, t: ArrayLike, interval: ArrayLike = (0, 
 
 
 def evaluation_cost(degree: int) -> dict[str, tuple[int, int]]:
-    """Floating-point (multiplies, adds) per evaluation point of a degree-n polynomial, by method. Notes ch. 3.
+    """Floating-point (multiplies, adds) per evaluation point of a degree-n polynomial, by method. Notes §3.1, §3.2.
 
     Keys: "horner" (power form, (n, n)), "bernstein_horner" (nested Bernstein
     form with C(n, i) b_i precomputed once: (3n, n + 1)) and "de_casteljau"
@@ -156,7 +212,7 @@ def evaluation_cost(degree: int) -> dict[str, tuple[int, int]]:
 
 
 def difference_table(coeffs: ArrayLike) -> list[np.ndarray]:
-    """Forward differences of the coefficients, row j holding Δʲ b_i for i = 0..n-j. Notes ch. 3.
+    """Forward differences of the coefficients, row j holding Δʲ b_i for i = 0..n-j. Notes §3.3.
 
     Rows have shape (n+1-j,) or (n+1-j, d); row 0 is a copy of `coeffs`. The
     left column (row j, entry 0) gives the derivatives at 0:
@@ -170,12 +226,17 @@ def difference_table(coeffs: ArrayLike) -> list[np.ndarray]:
 
 
 def bernstein_to_power(coeffs: ArrayLike, interval: ArrayLike = (0, 1)) -> np.ndarray:
-    """Bernstein coefficients on `interval` -> ascending power coefficients in t, same shape. Notes (3.1).
+    """Bernstein coefficients on `interval` -> ascending power coefficients in t, same shape. Notes §3.3, (3.1).
 
     On [0, 1] the power coefficients are the Taylor coefficients at 0,
     a_i = B^(i)(0) / i! = C(n, i) Δⁱ b_0: the left column of the difference
     table scaled by the binomials. On [t0, t1] that gives the polynomial in
     u = (t - t0) / (t1 - t0), which is then rewritten in t.
+    The notes' table read downwards, homogeneous (X, Y, W) columns:
+
+    >>> from cagd_ref.polynomials import bernstein_to_power
+    >>> bernstein_to_power([(1.0, 2.0, 1.0), (9.0, 12.0, 3.0), (4.0, 3.0, 1.0), (6.0, 2.0, 2.0)]).tolist()
+    [[1.0, 2.0, 1.0], [24.0, 30.0, 6.0], [-39.0, -57.0, -12.0], [20.0, 27.0, 7.0]]
     """
     b = as_coefficients(coeffs)
     t0, t1 = as_interval(interval)
@@ -185,12 +246,17 @@ def bernstein_to_power(coeffs: ArrayLike, interval: ArrayLike = (0, 1)) -> np.nd
 
 
 def power_to_bernstein(coeffs: ArrayLike, interval: ArrayLike = (0, 1)) -> np.ndarray:
-    """Ascending power coefficients in t -> Bernstein coefficients on `interval`, same shape. Notes ch. 3.
+    """Ascending power coefficients in t -> Bernstein coefficients on `interval`, same shape. Notes §3.3.
 
     The left column of the difference table is a_j / C(n, j); running the
     table backwards (each entry is the one to its left plus the one below
     that) fills in the top row, which holds the Bernstein coefficients. On
     [t0, t1] the polynomial is first rewritten in u, t = t0 + (t1 - t0) u.
+    The notes' example: a rational cubic given by its homogeneous power form.
+
+    >>> from cagd_ref.polynomials import power_to_bernstein
+    >>> power_to_bernstein([(1, 2, 1), (24, 30, 6), (-39, -57, -12), (20, 27, 7)]).round(12).tolist()
+    [[1.0, 2.0, 1.0], [9.0, 12.0, 3.0], [4.0, 3.0, 1.0], [6.0, 2.0, 2.0]]
     """
     a = as_coefficients(coeffs)
     t0, t1 = as_interval(interval)
@@ -206,10 +272,15 @@ def power_to_bernstein(coeffs: ArrayLike, interval: ArrayLike = (0, 1)) -> np.nd
 
 
 def bernstein_multiply(f: ArrayLike, g: ArrayLike) -> np.ndarray:
-    """Bernstein coefficients of the product of two Bernstein polynomials (degrees m and n -> m + n). Notes ch. 9.
+    """Bernstein coefficients of the product of two Bernstein polynomials (degrees m and n -> m + n). Notes §9.3.
 
     h_k = Σ_{i+j=k} C(m, i) C(n, j) / C(m+n, k) f_i g_j. Both inputs (m+1,)/(n+1,)
     or both (·, d) for column-wise products; the same on any common interval.
+    The notes give only the formula; a course example, (1 + t)(3 + 2t) = 3 + 5t + 2t²:
+
+    >>> from cagd_ref.polynomials import bernstein_multiply
+    >>> (bernstein_multiply([1, 2], [3, 4, 5]) * 3).round(12).tolist()     # <3, 14/3, 7, 10>, times 3
+    [9.0, 14.0, 21.0, 30.0]
     """
     f = as_coefficients(f, "f")
     g = as_coefficients(g, "g")
@@ -226,9 +297,15 @@ def bernstein_multiply(f: ArrayLike, g: ArrayLike) -> np.ndarray:
 
 
 def bernstein_integral(coeffs: ArrayLike, interval: ArrayLike = (0, 1)) -> np.ndarray:
-    """Coefficients of the antiderivative q (degree n+1, q(t0) = 0) of p = Σ p_i B_i^n over `interval`. Notes (2.17)-(2.19).
+    """Coefficients of the antiderivative q (degree n+1, q(t0) = 0) of p = Σ p_i B_i^n over `interval`. Notes §2.16.
 
-    q_0 = 0 and q_i = (t1 - t0)/(n+1) (p_0 + ... + p_{i-1}); shape (n+2,) or (n+2, d).
+    q_0 = 0 and q_i = (t1 - t0)/(n+1) (p_0 + ... + p_{i-1}), eqs. (2.17)-(2.19);
+    shape (n+2,) or (n+2, d). The last coefficient is the area (2.20), the
+    mean of the p_i. The notes give only the formulas; a course example:
+
+    >>> from cagd_ref.polynomials import bernstein_integral
+    >>> bernstein_integral([3, 6, 9]).tolist()              # q = (0, 3, 9, 18) / 3; area 6 = mean(3, 6, 9)
+    [0.0, 1.0, 3.0, 6.0]
     """
     p = as_coefficients(coeffs)
     t0, t1 = as_interval(interval)
@@ -238,5 +315,5 @@ def bernstein_integral(coeffs: ArrayLike, interval: ArrayLike = (0, 1)) -> np.nd
 
 
 def bernstein_area(coeffs: ArrayLike, interval: ArrayLike = (0, 1)) -> float | np.ndarray:
-    """Area under an explicit Bézier curve over `interval`: (t1 - t0) times the mean coefficient. Notes (2.20)."""
+    """Area under an explicit Bézier curve over `interval`: (t1 - t0) times the mean coefficient. Notes §2.16 (2.20)."""
     return bernstein_integral(coeffs, interval)[-1]

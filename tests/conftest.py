@@ -61,5 +61,10 @@ def bezier_polynomials():
 
 @pytest.fixture
 def notes_cubic() -> np.ndarray:
-    """The cubic of the notes' hodograph table (§2.7), defined over [0, 1/2]."""
-    return np.array([[2.0, 1.0], [4.0, 5.0], [8.0, 6.0], [9.0, 2.0]])
+    """The control points (4, 2) of the cubic of the notes' hodograph table (§2.7), defined over [0, 1/2].
+
+    A fresh copy of the kept example 02.hodograph_table, so a test may change it.
+    """
+    from cagd_course.examples import notes_example
+
+    return notes_example("02.hodograph_table").args("points")[0]

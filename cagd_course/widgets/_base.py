@@ -145,7 +145,9 @@ class Explorer:
     def _set_controls(self, values: dict) -> None:
         unknown = sorted(set(values) - set(self.controls))
         if unknown:
-            raise TypeError(f"{', '.join(unknown)}: not a control of this explorer; controls are {sorted(self.controls)}")
+            raise TypeError(
+                f"{', '.join(unknown)}: not a control of this explorer; controls are {sorted(self.controls)}"
+            )
         self._syncing = True
         try:
             for name, value in values.items():

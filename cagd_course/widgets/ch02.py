@@ -13,7 +13,7 @@ from cagd_ref._validation import as_count, as_float_array, as_points
 from cagd_ref.bezier import de_casteljau, de_casteljau_triangle, elevate, signed_curvature, subdivide
 from cagd_ref.continuity import continuity, curvature_comb
 
-from ..plotting import (
+from ..plotting.curves import (
     bezier_samples,
     plot_bezier,
     plot_control_polygon,
@@ -201,7 +201,7 @@ def control_point_editor(points=None, weights=None, draggable: bool | None = Non
 
 
 class RationalWeightExplorer(Explorer):
-    """One weight of a rational Bézier curve on a log slider, over the family of fixed weights. Notes §2.9, Fig. 2.13."""
+    """One weight of a rational Bézier curve on a log slider, over a family of fixed weights. Notes §2.9, Fig. 2.13."""
 
     def __init__(self, points=None, index=None):
         self.points = _control_points(points, DEFAULT_CUBIC, min_count=3)
@@ -210,7 +210,9 @@ class RationalWeightExplorer(Explorer):
         if self.index > n:
             raise ValueError(f"index: expected 0 <= index <= {n}, got {self.index}")
         # The grey family does not depend on the slider: sample it once.
-        self.family = {w: bezier_samples(self.points, self.weights_with(w), samples=CURVE_SAMPLES) for w in FAMILY_WEIGHTS}
+        self.family = {
+            w: bezier_samples(self.points, self.weights_with(w), samples=CURVE_SAMPLES) for w in FAMILY_WEIGHTS
+        }
         weight = _slider(widgets.FloatLogSlider, f"w{self.index}", base=10, min=-2, max=2, step=0.02, value=1.0)
         super().__init__({"weight": weight})
 
@@ -237,8 +239,10 @@ class RationalWeightExplorer(Explorer):
             ax.plot(*curve.T, color="0.6", linewidth=1)
             near = curve[np.nanargmin(np.hypot(*(curve - target).T))]
             ax.annotate(f"{w:g}", near, fontsize=7, color="0.35", xytext=(3, -9), textcoords="offset points")
-        plot_bezier(ax, self.points, state["weights"], color="C3", label=f"$w_{{{self.index}}}$ = {state['weight']:.3g}")
-        ax.set_title(f"Changing weight $w_{{{self.index}}}$ (grey: $w_{{{self.index}}}$ = " + ", ".join(f"{w:g}" for w in FAMILY_WEIGHTS) + ")", fontsize=9)
+        name = f"$w_{{{self.index}}}$"
+        plot_bezier(ax, self.points, state["weights"], color="C3", label=f"{name} = {state['weight']:.3g}")
+        family = ", ".join(f"{w:g}" for w in FAMILY_WEIGHTS)
+        ax.set_title(f"Changing weight {name} (grey: {name} = {family})", fontsize=9)
         ax.legend(fontsize=8, loc="lower center")
 
     def describe(self, state: dict) -> str:
@@ -259,7 +263,7 @@ def rational_weight_explorer(points=None, index=None) -> RationalWeightExplorer:
 
 
 def vertex_distance(vertices, points, samples: int = 2001) -> float:
-    """Largest distance from any of `vertices` (k, d) to the Bézier curve with control points `points`. Notes §2.4, §2.5.
+    """Largest distance from any of `vertices` (k, d) to the Bézier curve of `points`. Notes §2.4, §2.5.
 
     The curve is replaced by the polyline through `samples` of its points; the
     error of that is O(1/samples²) of the curve's size.
@@ -274,7 +278,7 @@ def vertex_distance(vertices, points, samples: int = 2001) -> float:
 
 
 def subdivide_all(points, depth: int) -> np.ndarray:
-    """Split a Bézier curve at t = 1/2 `depth` times over: 2**depth control polygons, shape (2**depth, n+1, d). Notes §2.5.
+    """Split a Bézier curve at t = 1/2 `depth` times over: 2**depth polygons, shape (2**depth, n+1, d). Notes §2.5.
 
     All pieces of one generation are halved together on a stacked array.
     """
@@ -393,7 +397,8 @@ class CurvatureCombExplorer(Explorer):
         plot_control_polygon(ax, self.points, legend="control polygon")
         teeth = len(state["bases"])
         plot_curvature_comb(ax, self.points, teeth, self.values["length"], self.weights)
-        ax.set_title(f"Curvature comb, {teeth} teeth; longest tooth = max |κ| = {state['max_curvature']:.3g}", fontsize=10)
+        ax.set_title(f"Curvature comb, {teeth} teeth; longest tooth = max |κ| = {state['max_curvature']:.3g}",
+                     fontsize=10)
         ax.legend(fontsize=8, loc="upper right")
 
     def describe(self, state: dict) -> str:

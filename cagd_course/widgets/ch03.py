@@ -14,7 +14,8 @@ from numpy.typing import ArrayLike
 from cagd_ref._validation import as_coefficients, as_count
 from cagd_ref.polynomials import bernstein_horner, bernstein_to_power, difference_table, evaluation_cost, horner
 
-from ..plotting import plot_control_polygon
+from ..examples import notes_example
+from ..plotting.curves import plot_control_polygon
 from ._base import CURVE_SAMPLES, Explorer, _fmt, _slider, _swatch
 
 __all__ = [
@@ -27,8 +28,8 @@ __all__ = [
     "EvaluationCostExplorer",
 ]
 
-# The weights of the notes' rational cubic: Bernstein (1, 3, 1, 2), power (1, 6, -12, 7).
-DEFAULT_BERNSTEIN = (1.0, 3.0, 1.0, 2.0)
+# The weights of the notes' rational cubic (§3.3), the W column of its difference table.
+DEFAULT_BERNSTEIN = tuple(notes_example("03.rational_cubic").results["weights"].tolist())
 MAX_EXPLORED_DEGREE = 6
 COEFFICIENT_RANGE = (-15.0, 15.0)
 SUPERSCRIPTS = str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹")
@@ -67,7 +68,7 @@ def _superscript(k: int) -> str:
 
 
 def power_text(coeffs: ArrayLike, variable: str = "t") -> str:
-    """Ascending power coefficients (n+1,) as readable text, e.g. "1 + 6t − 12t² + 7t³". Notes ch. 3."""
+    """Ascending power coefficients (n+1,) as readable text, e.g. "1 + 6t − 12t² + 7t³". Notes §3.3."""
     a = as_coefficients(coeffs)
     if a.ndim != 1:
         raise ValueError(f"coeffs: expected one polynomial, shape (n+1,), got shape {a.shape}")
@@ -88,7 +89,7 @@ def power_text(coeffs: ArrayLike, variable: str = "t") -> str:
 
 
 def draw_difference_table(ax: Axes, coeffs: ArrayLike, power: bool = True, fontsize: float | None = None) -> Axes:
-    """Draw the forward-difference table of Bernstein coefficients (n+1,) or (n+1, d) as a staircase. Notes ch. 3.
+    """Draw the forward-difference table of Bernstein coefficients (n+1,) or (n+1, d) as a staircase. Notes §3.3.
 
     Row j holds Δʲ b_0, ..., Δʲ b_(n-j); the top row (the Bernstein
     coefficients) is shaded blue and the left column (Δʲ b_0) framed orange.
@@ -124,7 +125,7 @@ def draw_difference_table(ax: Axes, coeffs: ArrayLike, power: bool = True, fonts
 
 
 def difference_table_html(coeffs: ArrayLike) -> str:
-    """The difference table of `draw_difference_table` as an HTML table, for readouts. Notes ch. 3.
+    """The difference table of `draw_difference_table` as an HTML table, for readouts. Notes §3.3.
 
     Row j: the power coefficient a_j = C(n, j) Δʲ b_0 (orange), "← ×C(n, j)", then
     Δʲ b_0 ... Δʲ b_(n-j); the top row (the Bernstein coefficients) is blue.
@@ -135,7 +136,8 @@ def difference_table_html(coeffs: ArrayLike) -> str:
     cell = "<td style='padding:1px 6px;text-align:center;{}'>{}</td>"
     top, left = "background:#d6e6f5", "background:#fde3c8"
     lines = ["<table style='border-collapse:collapse;font-size:90%'>",
-             f"<tr><th>a<sub>j</sub></th><th></th><th colspan='{n + 1}'>b<sub>i</sub> (Bernstein), then Δ, Δ², …</th></tr>"
+             "<tr><th>a<sub>j</sub></th><th></th>"
+             f"<th colspan='{n + 1}'>b<sub>i</sub> (Bernstein), then Δ, Δ², …</th></tr>"
              ]
     for j, row in enumerate(rows):
         entries = "".join(
@@ -156,7 +158,7 @@ def difference_table_html(coeffs: ArrayLike) -> str:
 
 
 class BasisConversionExplorer(Explorer):
-    """Sliders for the Bernstein coefficients of an explicit polynomial; its power form and table. Notes ch. 3.
+    """Sliders for the Bernstein coefficients of an explicit polynomial; its power form and table. Notes §3.3.
 
     The figure holds the curve; the difference table and the colour key are
     HTML in the readout, where text is crisp and costs the redraw nothing.
@@ -212,7 +214,7 @@ class BasisConversionExplorer(Explorer):
 
 
 def basis_conversion_explorer(coeffs: ArrayLike | None = None) -> BasisConversionExplorer:
-    """Sliders `b0, b1, ...` (-15..15) for the Bernstein coefficients of an explicit polynomial on [0, 1]. Notes ch. 3.
+    """Sliders `b0, b1, ...` (-15..15) for the Bernstein coefficients of an explicit polynomial on [0, 1]. Notes §3.3.
 
     coeffs: (n+1,) with 1 <= n <= 6, default (1, 3, 1, 2), the weights of the
     notes' rational example. Draws the explicit Bézier curve with both
@@ -227,7 +229,7 @@ def basis_conversion_explorer(coeffs: ArrayLike | None = None) -> BasisConversio
 
 
 class EvaluationCostExplorer(Explorer):
-    """Operations per point of Horner, nested Bernstein evaluation and de Casteljau, by degree. Notes ch. 3."""
+    """Operations per point of Horner, nested Bernstein evaluation and de Casteljau, by degree. Notes §3.1, §3.2."""
 
     def __init__(self, max_degree: int = 30):
         max_degree = as_count(max_degree, "max_degree", minimum=1)
@@ -266,7 +268,7 @@ class EvaluationCostExplorer(Explorer):
 
 
 def evaluation_cost_explorer(max_degree: int = 30) -> EvaluationCostExplorer:
-    """Slider `degree` (1..max_degree): floating-point operations per point of each evaluation method. Notes ch. 3.
+    """Slider `degree` (1..max_degree): floating-point operations per point of each evaluation method. Notes §3.1, §3.2.
 
     `update` returns {"degree", "costs" (`polynomials.evaluation_cost` at that
     degree: method -> (multiplies, adds)), "degrees" (0..max_degree), "totals"

@@ -1,28 +1,38 @@
 """Hidden grading suite of chapter 2: Bernstein polynomials and Bézier curves.
 
-Fixed cases reuse the numbers of the notes (the cubic (2,1), (4,5), (8,6), (9,2)
-of the hodograph table, the quarter circle, the curvature formula at an end
-point); edge cases probe degree 0 and 1, coincident control points, t at the
-ends and outside [0, 1], and a scalar t against an array of them; the random
-cases come from the generator the grader passes in.
+Fixed cases take the worked examples from cagd_course/examples/ch02.toml (the
+cubic of the notes' hodograph table, the quarter circle, the curvature formula
+at an end point, the quadratic split at τ = 2); edge cases probe degree 0 and 1,
+coincident control points, t at the ends and outside [0, 1], and a scalar t
+against an array of them; the random cases come from the generator the grader
+passes in.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
+from cagd_course.examples import notes_example
 from cagd_course.grading.suite import Case, Exercise, close
 from cagd_ref import bezier, polynomials
 
 NOTES = "notes example"
+COURSE = "course example"
 EDGE = "edge cases"
 SHAPES = "scalar vs array t"
 RANDOM = "random"
 BAD = "bad input"
 
-CUBIC = [(2.0, 1.0), (4.0, 5.0), (8.0, 6.0), (9.0, 2.0)]  # the cubic of the hodograph table
-QUARTER = [(1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]  # with weights (1, 1/√2, 1): a quarter of the unit circle
-QUARTER_W = [1.0, np.sqrt(0.5), 1.0]
+# The notes' examples, as lists of tuples: students must accept those as well as arrays.
+TABLE = notes_example("02.hodograph_table")
+CUBIC = [tuple(point) for point in TABLE.inputs["points"].tolist()]  # the cubic of the hodograph table
+TABLE_INTERVAL = tuple(TABLE.inputs["interval"].tolist())  # it lives on [0, 1/2]
+CIRCLE = notes_example("02.quarter_circle")
+QUARTER = [tuple(point) for point in CIRCLE.results["points"].tolist()]  # a quarter of the unit circle ...
+QUARTER_W = CIRCLE.results["weights"].tolist()  # ... with weights (1, 1/√2, 1)
+ENDPOINT = notes_example("02.endpoint_curvature")  # κ(0) = 2/25 by (2.13)
+BEYOND = notes_example("02.split_beyond")  # a quadratic split at τ = 2
+RATIONAL = notes_example("03.rational_cubic")  # chapter 3's rational cubic, points and weights
 SPACE = [(0.0, 0.0, 0.0), (1.0, 2.0, 0.5), (3.0, -1.0, 2.0), (4.0, 1.0, -1.0)]
 
 
@@ -46,7 +56,7 @@ def _weights(rng, count):
 
 def bernstein_cases(rng):
     cases = [
-        Case(NOTES, (1, 3, 0.5), visible=True),  # 3 t (1-t)² at 1/2
+        Case(NOTES, (1, 3, 0.5), visible=True),  # 3 t (1-t)² at 1/2, the notes' B_1^3
         Case(NOTES, (2, 3, 0.25), visible=True),
         Case(NOTES, (0, 3, [0.0, 0.25, 0.5, 0.75, 1.0]), visible=True),
         Case(EDGE, (0, 0, 0.3), visible=True),  # the only degree-0 polynomial is 1
@@ -113,7 +123,7 @@ def de_casteljau_cases(rng):
 def subdivide_cases(rng):
     cases = [
         Case(NOTES, (CUBIC, 0.5), visible=True),
-        Case(NOTES, ([(0.0, 0.0), (1.0, 2.0), (3.0, 0.0)], 2.0), visible=True),  # a quadratic split at τ = 2
+        Case(NOTES, (BEYOND.inputs["points"].tolist(), float(BEYOND.inputs["t"])), visible=True),  # τ = 2
         Case(EDGE, (CUBIC, 0.0), visible=True),
         Case(EDGE, (CUBIC, 1.0), visible=True),
         Case(EDGE, (CUBIC, -1.0), visible=True),
@@ -139,7 +149,7 @@ def subdivide_cases(rng):
 def elevate_cases(rng):
     cases = [
         Case(NOTES, (CUBIC,), visible=True),  # P*_1 = P0/4 + 3 P1/4, ...
-        Case(NOTES, ([(0.0, 0.0), (0.0, 4.0), (4.0, 4.0), (4.0, 0.0)],), visible=True),
+        Case(EDGE, ([(0.0, 0.0), (0.0, 4.0), (4.0, 4.0), (4.0, 0.0)],), visible=True),
         Case(EDGE, ([(3.0, -1.0)],), visible=True),  # degree 0 -> a segment with equal ends
         Case(EDGE, ([(0.0, 0.0), (4.0, 2.0)],), visible=True),
         Case(EDGE, ([(1.0, 1.0), (1.0, 1.0), (1.0, 1.0)],), visible=True),
@@ -161,10 +171,10 @@ def elevate_cases(rng):
 
 def hodograph_cases(rng):
     cases = [
-        # The table of §2.7: the curve lives on [0, 1/2].
-        Case(NOTES, (CUBIC, (0, 0.5)), visible=True),
-        Case(NOTES, (bezier.hodograph(CUBIC, (0, 0.5)), (0, 0.5)), visible=True),
-        Case(NOTES, ([(48.0, -72.0), (-72.0, -120.0)], (0, 0.5)), visible=True),
+        # The table of §2.7, row by row: the curve lives on [0, 1/2].
+        Case(NOTES, (CUBIC, TABLE_INTERVAL), visible=True),
+        Case(NOTES, (TABLE.results["first"].tolist(), TABLE_INTERVAL), visible=True),
+        Case(NOTES, (TABLE.results["second"].tolist(), TABLE_INTERVAL), visible=True),
         Case(NOTES, (CUBIC,), visible=True),
         Case(EDGE, (CUBIC, (0, 1)), visible=True),
         Case(EDGE, ([(3.0, -1.0)],), visible=True),  # degree 0: the zero curve, one zero point
@@ -192,7 +202,8 @@ def hodograph_cases(rng):
 def to_homogeneous_cases(rng):
     cases = [
         Case(NOTES, (QUARTER, QUARTER_W), visible=True),
-        Case(NOTES, ([(0.0, 0.0), (5.0, 0.0), (8.0, 4.0)], [1.0, 2.0, 4.0]), visible=True),
+        Case(NOTES, (ENDPOINT.inputs["points"].tolist(), ENDPOINT.inputs["weights"].tolist()), visible=True),
+        Case(NOTES, (RATIONAL.results["points"].tolist(), RATIONAL.results["weights"].tolist()), visible=True),
         Case(EDGE, ([(3.0, -1.0)], [2.0]), visible=True),
         Case(EDGE, (CUBIC, [1.0, 1.0, 1.0, 1.0]), visible=True),
         Case(EDGE, ([[1.0], [5.0], [2.0]], [0.5, 1.0, 3.0]), visible=True),
@@ -212,7 +223,8 @@ def to_homogeneous_cases(rng):
 def from_homogeneous_cases(rng):
     cases = [
         Case(NOTES, (bezier.to_homogeneous(QUARTER, QUARTER_W),), visible=True),
-        Case(NOTES, ([(0.0, 0.0, 1.0), (10.0, 0.0, 2.0), (32.0, 16.0, 4.0)],), visible=True),
+        Case(NOTES, (bezier.to_homogeneous(*ENDPOINT.args("points", "weights")).tolist(),), visible=True),
+        Case(NOTES, (RATIONAL.results["bernstein"].tolist(),), visible=True),  # the top row of chapter 3's table
         Case(EDGE, ([(6.0, -2.0, 2.0)],), visible=True),
         Case(EDGE, ([(2.0, 1.0, 1.0), (4.0, 5.0, 1.0)],), visible=True),
         Case(EDGE, ([(1.0, 2.0), (5.0, 0.5)],), visible=True),  # 1-D points
@@ -275,7 +287,7 @@ def curvature_cases(rng):
         Case(NOTES, (QUARTER, 0.5, QUARTER_W), visible=True),  # a unit circle: curvature 1
         Case(NOTES, (QUARTER, [0.0, 0.3, 1.0]), {"weights": QUARTER_W}, visible=True),
         # The end-point formula (2.13) with w = (1, 2, 4), a = 5, h = 4 gives 2/25.
-        Case(NOTES, ([(0.0, 0.0), (5.0, 0.0), (8.0, 4.0)], 0.0, [1.0, 2.0, 4.0]), visible=True),
+        Case(NOTES, (ENDPOINT.inputs["points"].tolist(), 0.0, ENDPOINT.inputs["weights"].tolist()), visible=True),
         Case(EDGE, ([(0.0, 0.0), (4.0, 2.0)], 0.3), visible=True),  # a line: curvature 0
         Case(EDGE, ([(0.0, 0.0), (1.0, 1.0), (2.0, 2.0), (5.0, 5.0)], 0.6), visible=True),
         Case(EDGE, ([(3.0, 0.0), (3.0, 3.0), (0.0, 3.0)], 0.5, [1.0, np.sqrt(0.5), 1.0]), visible=True),
@@ -307,9 +319,11 @@ def curvature_cases(rng):
 
 def bernstein_integral_cases(rng):
     cases = [
-        # The last coefficient is the area under the explicit curve: the mean of the p_i.
-        Case(NOTES, ([1.0, 2.0, 3.0],), visible=True),
-        Case(NOTES, ([0.0, 3.0, -1.0, 2.0, 5.0, 0.5],), visible=True),
+        # The last coefficient is the area under the explicit curve: the mean of the p_i. (The notes give
+        # only the formulas (2.17)-(2.20); these are the course's.)
+        Case(COURSE, (notes_example("02.integral").inputs["coeffs"].tolist(),), visible=True),
+        Case(COURSE, ([1.0, 2.0, 3.0],), visible=True),
+        Case(COURSE, ([0.0, 3.0, -1.0, 2.0, 5.0, 0.5],), visible=True),
         Case(EDGE, ([4.0],), visible=True),  # a constant integrates to a line
         Case(EDGE, ([0.0, 0.0, 0.0],), visible=True),
         Case(EDGE, ([2.0, -2.0],), visible=True),
@@ -399,7 +413,8 @@ EXERCISES = [
         cases=curvature_cases,
         compare=close(1e-7, 1e-7),
         hint="κ = |P' × P''| / |P'|³ (the cube of the speed). For a rational curve differentiate P = X / w with "
-        "the quotient rule, or use P' = (X' - w' P)/w and P'' = (X'' - 2 w' P' - w'' P)/w. Curvature is never negative.",
+        "the quotient rule, or use P' = (X' - w' P)/w and P'' = (X'' - 2 w' P' - w'' P)/w. Curvature is never "
+        "negative.",
     ),
     Exercise(
         id="02.bernstein_integral",

@@ -1,16 +1,18 @@
 """Hidden grading suite of chapter 3: evaluating polynomials and converting between bases.
 
-Fixed cases reuse the notes' rational cubic, given by its homogeneous (X, Y, W)
-coefficients in both bases (NOTES_POWER and NOTES_BERNSTEIN, one coordinate per
-column) and by single columns of it. Edge cases probe degree 0 and 1, t at 0 and 1 and
-outside [0, 1], a scalar t against an array of them, and coefficient columns;
-random cases come from the generator the grader passes in.
+Fixed cases reuse the notes' rational cubic (cagd_course/examples/ch03.toml), given
+by its homogeneous (X, Y, W) coefficients in both bases (NOTES_POWER and
+NOTES_BERNSTEIN, one coordinate per column) and by single columns of it. Edge
+cases probe degree 0 and 1, t at 0 and 1 and outside [0, 1], a scalar t against
+an array of them, and coefficient columns; random cases come from the generator
+the grader passes in.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
+from cagd_course.examples import notes_example
 from cagd_course.grading.suite import Case, Exercise, close
 from cagd_ref import polynomials
 
@@ -21,12 +23,15 @@ COLUMNS = "several polynomials (columns)"
 RANDOM = "random"
 BAD = "bad input"
 
-NOTES_POWER = [(1.0, 2.0, 1.0), (24.0, 30.0, 6.0), (-39.0, -57.0, -12.0), (20.0, 27.0, 7.0)]
-NOTES_BERNSTEIN = [(1.0, 2.0, 1.0), (9.0, 12.0, 3.0), (4.0, 3.0, 1.0), (6.0, 2.0, 2.0)]
-NOTES_X_POWER = [1.0, 24.0, -39.0, 20.0]
-NOTES_X_BERNSTEIN = [1.0, 9.0, 4.0, 6.0]
-NOTES_W_BERNSTEIN = [1.0, 3.0, 1.0, 2.0]
-CUBIC = [2.0, -3.0, 0.0, 1.0]  # 2 - 3t + t³
+# As lists of tuples and lists: students must accept those as well as arrays.
+_RATIONAL = notes_example("03.rational_cubic")
+NOTES_POWER = [tuple(row) for row in _RATIONAL.inputs["power"].tolist()]
+NOTES_BERNSTEIN = [tuple(row) for row in _RATIONAL.results["bernstein"].tolist()]
+NOTES_X_POWER = _RATIONAL.inputs["power"][:, 0].tolist()
+NOTES_X_BERNSTEIN = _RATIONAL.results["bernstein"][:, 0].tolist()
+NOTES_W_BERNSTEIN = _RATIONAL.results["weights"].tolist()
+_STEPS = notes_example("03.horner_steps")
+CUBIC = _STEPS.inputs["coeffs"].tolist()  # 2 - 3t + t³, the course's example of Horner's steps
 
 
 def _coefficients(rng, low_degree=0, high_degree=8):
@@ -59,7 +64,7 @@ def horner_cases(rng):
     cases = [
         Case(NOTES, (NOTES_X_POWER, 0.5), visible=True),
         Case(NOTES, (NOTES_POWER, [0.0, 0.5, 1.0]), visible=True),  # X, Y, W of the rational cubic
-        Case(EDGE, (CUBIC, 2.0), visible=True),  # ((1·2 + 0)·2 - 3)·2 + 2 = 4
+        Case(EDGE, (CUBIC, float(_STEPS.inputs["t"])), visible=True),  # ((1·2 + 0)·2 - 3)·2 + 2 = 4
         Case(EDGE, (CUBIC, -1.5), visible=True),
         Case(EDGE, ([7.0], 3.0), visible=True),  # degree 0: a constant
         Case(EDGE, ([1.0, -2.0], [0.0, 0.5, 4.0]), visible=True),
@@ -143,7 +148,9 @@ def bernstein_to_power_cases(rng):
     return cases + _bad_coefficient_cases()
 
 
-SHAPE_RULE = "A number t gives a float (or shape (d,) for (n+1, d) coefficients); a 1-D array of k values gives (k,) or (k, d)."
+SHAPE_RULE = (
+    "A number t gives a float (or shape (d,) for (n+1, d) coefficients); a 1-D array of k values gives (k,) or (k, d)."
+)
 
 EXERCISES = [
     Exercise(
@@ -160,7 +167,8 @@ EXERCISES = [
         cases=bernstein_horner_cases,
         compare=close(1e-9, 1e-9),
         hint="With s = 1 - t: start from b_0 C(n,0) s, then for i = 1..n-1 update tⁱ and C(n, i) = C(n, i-1)(n-i+1)/i, "
-        "add C(n, i) tⁱ b_i and multiply by s; finally add tⁿ b_n. A degree-0 polynomial is its constant. " + SHAPE_RULE,
+        "add C(n, i) tⁱ b_i and multiply by s; finally add tⁿ b_n. A degree-0 polynomial is its constant. "
+        + SHAPE_RULE,
     ),
     Exercise(
         id="03.power_to_bernstein",

@@ -43,7 +43,8 @@ def test_docstring_examples_run(module):
     runner = doctest.DocTestRunner(optionflags=FLAGS)
     module = importlib.import_module(f"cagd_ref.{module}")
     with np.printoptions(legacy=False):
-        for test in finder.find(module, globs={"np": np}):
+        # Examples run in the module's own namespace (as pytest's doctest does): its functions and np are there.
+        for test in finder.find(module):
             runner.run(test)
     assert runner.failures == 0, f"{runner.failures} docstring example(s) of {module.__name__} failed (output above)"
 

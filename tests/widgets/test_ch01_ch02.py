@@ -301,7 +301,9 @@ def test_continuity_reaches_c2_and_reparametrising_keeps_g2():
 # ---------------------------------------------------------------- rotation
 
 
-@pytest.mark.parametrize("angle, axis", [(0.0, (0, 0, 1)), (90.0, (0, 0, 1)), (-135.0, (1, 0.5, -0.3)), (45.0, (0.2, -1, 0.4))])
+@pytest.mark.parametrize(
+    "angle, axis", [(0.0, (0, 0, 1)), (90.0, (0, 0, 1)), (-135.0, (1, 0.5, -0.3)), (45.0, (0.2, -1, 0.4))]
+)
 def test_rotation_explorer_matches_rotate_about_axis(angle, axis):
     explorer = widgets.rotation_explorer()
     state = explorer.update(angle=angle, axis_x=axis[0], axis_y=axis[1], axis_z=axis[2])

@@ -10,17 +10,16 @@ import pytest
 from matplotlib.figure import Figure
 
 from cagd_course import widgets
+from cagd_course.examples import notes_example
 from cagd_course.widgets import ch03
 from cagd_ref.bezier import de_casteljau
 from cagd_ref.polynomials import evaluation_cost
 
-# The notes' rational cubic, one homogeneous coordinate at a time: Bernstein row -> power column.
+# The notes' rational cubic, one homogeneous coordinate at a time: Bernstein column -> power column.
+RATIONAL = notes_example("03.rational_cubic")
 NOTES_COLUMNS = {
-    "X": ([1.0, 9.0, 4.0, 6.0], [1.0, 24.0, -39.0, 20.0]),
-    "Y": ([2.0, 12.0, 3.0, 2.0], [2.0, 30.0, -57.0, 27.0]),
-    "W": ([1.0, 3.0, 1.0, 2.0], [1.0, 6.0, -12.0, 7.0]),
+    name: (RATIONAL.results["bernstein"][:, k], RATIONAL.inputs["power"][:, k]) for k, name in enumerate("XYW")
 }
-
 
 
 def test_module_exports_what_the_tests_cover():
@@ -40,7 +39,7 @@ def test_basis_conversion_of_the_notes_columns():
     for bernstein, power in NOTES_COLUMNS.values():
         state = explorer.update(**{f"b{i}": b for i, b in enumerate(bernstein)})
         np.testing.assert_allclose(state["power"], power, atol=1e-12)
-        assert [row[0] for row in state["table"]] == pytest.approx(np.array(power) / [1, 3, 3, 1])
+        assert [row[0] for row in state["table"]] == pytest.approx(power / RATIONAL.results["binomials"])
         np.testing.assert_allclose(state["bernstein_values"], state["power_values"], atol=1e-12)
         np.testing.assert_allclose(state["power_values"], npp.polyval(state["t"], power), atol=1e-12)
 
@@ -50,8 +49,9 @@ def test_basis_conversion_default_is_the_notes_weights_and_sliders_move_it():
     assert list(explorer.controls) == ["b0", "b1", "b2", "b3"]
     np.testing.assert_allclose(explorer.state["power"], NOTES_COLUMNS["W"][1])
     assert explorer.state["text"] == "1 + 6t − 12t² + 7t³"
-    state = explorer.update(b0=1, b1=9, b2=4, b3=6)
-    np.testing.assert_allclose(state["power"], NOTES_COLUMNS["X"][1])
+    x_bernstein, x_power = NOTES_COLUMNS["X"]
+    state = explorer.update(**{f"b{i}": b for i, b in enumerate(x_bernstein)})
+    np.testing.assert_allclose(state["power"], x_power)
     # The drawn curve is the explicit Bézier curve with control points (i/3, b_i).
     control = np.column_stack([np.arange(4) / 3, state["bernstein"]])
     np.testing.assert_allclose(np.column_stack([state["t"], state["bernstein_values"]]),
@@ -123,11 +123,12 @@ def test_power_text_rejects_columns():
 def test_draw_difference_table_of_homogeneous_rows():
     figure = Figure(figsize=(9, 3))
     ax = figure.add_subplot()
-    rows = np.array([[1, 2, 1], [9, 12, 3], [4, 3, 1], [6, 2, 2]])
+    rows = RATIONAL.results["bernstein"].astype(int)
     assert widgets.draw_difference_table(ax, rows) is ax
     texts = [t.get_text() for t in ax.texts]
-    for entry in ["(1, 2, 1)", "(8, 10, 2)", "(-13, -19, -4)", "(20, 27, 7)", "(24, 30, 6)", "(-39, -57, -12)"]:
-        assert entry in texts
+    # The notes' left column a_j / C(3, j) and the power coefficients a_j beside it, as (X, Y, W) triples.
+    for row in [*RATIONAL.results["left_column"], *RATIONAL.inputs["power"]]:
+        assert str(tuple(int(v) for v in row)) in texts
     assert not ax.axison
     bare = Figure().add_subplot()
     widgets.draw_difference_table(bare, [2.0, 5.0], power=False, fontsize=9)
