@@ -24,8 +24,8 @@ from ._validation import as_count, as_float_array, as_parameter, as_points
 from .bezier import bernstein_matrix
 from .polynomials import horner, power_to_bernstein
 
+# `Basis` is a type alias for annotations, not a function: it stays out of __all__, whose names the contract test calls.
 __all__ = [
-    "Basis",
     "POWER_COEFFICIENTS",
     "basis_values",
     "FORMS",
@@ -79,6 +79,14 @@ def timmer_basis(t) -> np.ndarray:
 
     f0 = (1-t)²(1-2t), f1 = 4t(1-t)², f2 = 4t²(1-t), f3 = t²(2t-1). At t = 1/2
     the values are (0, 1/2, 1/2, 0): the curve passes through the midpoint of P1 P2.
+
+    >>> from cagd_ref.blending import timmer_basis
+    >>> timmer_basis(0.5).tolist()                     # the notes' midpoint condition
+    [0.0, 0.5, 0.5, 0.0]
+    >>> timmer_basis([0.0, 1.0]).tolist()              # and the end points, like a Bézier cubic
+    [[1.0, 0.0, 0.0, 0.0], [0.0, 0.0, 0.0, 1.0]]
+
+    Ref: H. G. Timmer (1980), Alternative representation for parametric cubic curves and surfaces, CAD 12(1).
     """
     return _cubic_basis("timmer", t)
 
@@ -88,6 +96,15 @@ def ball_basis(t) -> np.ndarray:
 
     f0 = (1-t)², f1 = 2t(1-t)², f2 = 2t²(1-t), f3 = t²; all four are
     non-negative on [0, 1] and sum to one.
+
+    >>> from cagd_ref.blending import ball_basis
+    >>> ball_basis(0.5).tolist()                       # the middle of the curve is the centroid of the points
+    [0.25, 0.25, 0.25, 0.25]
+    >>> f = ball_basis(0.3)                            # with P1 = P2 the middle terms merge into 2t(1-t)
+    >>> round(float(f[1] + f[2]), 12), round(2 * 0.3 * 0.7, 12)
+    (0.42, 0.42)
+
+    Ref: A. A. Ball (1974), CONSURF, part 1: introduction to the conic lofting tile, CAD 6(4).
     """
     return _cubic_basis("ball", t)
 
@@ -121,10 +138,11 @@ FORMS: dict[str, Basis] = {
 }
 
 
-def basis_values(basis, ts: np.ndarray) -> np.ndarray:
-    """Call a blending-function set on the 1-D parameters ts and check it answers with shape (k, n+1)."""
+def basis_values(basis, ts) -> np.ndarray:
+    """Call a blending-function set on the 1-D parameters ts (k,) and check it answers with shape (k, n+1). Notes §5."""
     if not callable(basis):
         raise TypeError(f"basis: expected a function t -> values of shape (k, n+1), got {type(basis).__name__}")
+    ts, _ = as_parameter(ts, "ts")
     values = as_float_array(basis(ts), "basis")
     if values.ndim != 2 or values.shape[0] != len(ts) or values.shape[1] == 0:
         raise ValueError(
@@ -155,12 +173,23 @@ def overhauser_point(points, t) -> np.ndarray:
     j = 0..c-4 covers [j, j+1], is built from points j..j+3 and runs from
     points[j+1] to points[j+2], so P(j) = points[j+1]. At an integer t the two
     neighbouring segments agree (the curve is C1 there).
+
+    >>> from cagd_ref.blending import overhauser_point
+    >>> row = [(0, 0), (1, 2), (2, 0), (3, 2), (4, 0), (5, 2)]
+    >>> overhauser_point(row, [0.0, 1.0, 3.0]).tolist()   # through P1, P2 and, at the very end, P4
+    [[1.0, 2.0], [2.0, 0.0], [4.0, 0.0]]
+    >>> overhauser_point(row, 1.5).tolist()               # (-P1 + 9 P2 + 9 P3 - P4) / 16 at a midpoint
+    [2.5, 1.0]
+
+    Ref: E. Catmull and R. Rom (1974), A class of local interpolating splines, in: Computer Aided
+    Geometric Design (R. E. Barnhill, R. F. Riesenfeld, eds.), Academic Press.
     """
     pts = as_points(points, min_count=4)
     ts, scalar = as_parameter(t)
     last = len(pts) - 3
     if np.any((ts < 0) | (ts > last)):
-        raise ValueError(f"t: expected values in [0, {last}] for {len(pts)} points, got {ts[(ts < 0) | (ts > last)][:3].tolist()}")
+        outside = ts[(ts < 0) | (ts > last)][:3].tolist()
+        raise ValueError(f"t: expected values in [0, {last}] for {len(pts)} points, got {outside}")
     # t = c-3 belongs to the last segment, not to a segment c-3 that does not exist.
     segment = np.minimum(np.floor(ts), last - 1).astype(int)
     local = overhauser_basis(ts - segment)
@@ -189,7 +218,9 @@ def conversion_matrix(form: str) -> np.ndarray:
 def _four_points(points, form: str) -> np.ndarray:
     pts = as_points(points)
     if len(pts) != 4:
-        raise ValueError(f"points: the {form} form of a cubic has exactly 4 control points, expected shape (4, d), got {pts.shape}")
+        raise ValueError(
+            f"points: the {form} form of a cubic has exactly 4 control points, expected shape (4, d), got {pts.shape}"
+        )
     return pts
 
 
@@ -214,6 +245,13 @@ def timmer_to_bezier(points) -> np.ndarray:
 
     Matching the ends and the end derivatives Q'(0) = 4(Q1 - Q0), Q'(1) = 4(Q3 - Q2)
     gives P0 = Q0, P1 = (4 Q1 - Q0)/3, P2 = (4 Q2 - Q3)/3, P3 = Q3.
+
+    >>> from cagd_ref.blending import timmer_to_bezier
+    >>> bezier_points = timmer_to_bezier([(0, 0), (3, 3), (6, 3), (9, 0)])   # a course example
+    >>> (bezier_points.round(12) + 0.0).tolist()       # + 0.0 turns a rounded -0.0 into 0.0
+    [[0.0, 0.0], [4.0, 4.0], [5.0, 4.0], [9.0, 0.0]]
+
+    Read back, Q1 = (P0 + 3 P1)/4 = (3, 3) and Q2 = (P3 + 3 P2)/4 = (6, 3), as in the notes' example.
     """
     return to_bezier("timmer", points)
 

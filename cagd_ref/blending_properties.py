@@ -14,7 +14,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from ._validation import as_count, as_interval, as_points, as_scalar, as_vector
+from ._validation import as_count, as_float_array, as_interval, as_points, as_scalar, as_vector
 from .blending import FORMS, POWER_COEFFICIENTS, Basis, basis_values
 
 __all__ = [
@@ -23,8 +23,10 @@ __all__ = [
     "line_crossings",
     "convex_hull",
     "distance_outside_hull",
+    "variation_diminishing",
     "check_properties",
     "symbolic_basis",
+    "exact_minimum",
     "symbolic_properties",
 ]
 
@@ -209,7 +211,8 @@ def _probe_heights(rng: np.random.Generator, count: int, size: int) -> np.ndarra
     plain = rng.normal(size=(count - 2 * third, size))
     near = rng.normal(size=(third, size)) * 10.0 ** rng.uniform(-3, -1, (third, 1))
     near[np.arange(third), rng.integers(0, size, third)] = rng.choice([-1.0, 1.0], third)
-    alternating = (-1.0) ** np.arange(size) * 10.0 ** rng.uniform(-2, 2, (third, size)) * rng.choice([-1, 1], (third, 1))
+    signs = (-1.0) ** np.arange(size) * rng.choice([-1, 1], (third, 1))
+    alternating = signs * 10.0 ** rng.uniform(-2, 2, (third, size))
     return np.vstack([plain, near, alternating])
 
 
@@ -230,8 +233,27 @@ def _placed_probes(rng: np.random.Generator, count: int, size: int) -> tuple[np.
     return polygons, np.column_stack([normals, -np.einsum("pi,pi->p", normals, shift)])
 
 
-def _variation_diminishing(values: np.ndarray, probes: int, rng: np.random.Generator) -> Verdict:
-    """Random polygons and lines: does any line cross the sampled curve more often than the polygon?"""
+def variation_diminishing(values, probes: int = 600, seed: int = 0) -> Verdict:
+    """Look for a line that crosses a curve more often than its control polygon: Notes §5, property 4.
+
+    values: (k, n+1), the n+1 blending functions at k increasing parameters
+    (a collocation matrix, as `basis_values` gives it). `probes` random planar
+    polygons (seeded), each with a line of its own, are blended into sampled
+    curves; the sign changes of the signed distances to the line count the
+    crossings. A failure is a real counterexample (samples can only miss
+    crossings, never invent them); a pass is evidence, not a proof.
+
+    >>> from cagd_ref.blending import bezier_basis, timmer_basis
+    >>> from cagd_ref.blending_properties import variation_diminishing
+    >>> ts = np.linspace(0, 1, 257)
+    >>> variation_diminishing(bezier_basis(ts)).holds, variation_diminishing(timmer_basis(ts)).holds
+    (True, False)
+    """
+    values = as_float_array(values, "values")
+    if values.ndim != 2 or values.shape[0] < 2 or values.shape[1] < 1:
+        raise ValueError(f"values: expected blending-function values of shape (k, n+1) with k >= 2, got {values.shape}")
+    probes = as_count(probes, "probes", minimum=3)
+    rng = np.random.default_rng(as_count(seed, "seed"))
     polygons, lines = _placed_probes(rng, probes, values.shape[1])
     curves = np.einsum("si,pid->psd", values, polygons)
 
@@ -284,7 +306,7 @@ def check_properties(basis: Basis, domain=(0.0, 1.0), samples: int = 257, probes
         "coordinate_independence": unity,
         "convex_hull": _convex_hull_verdict(values, ts, unity, tol),
         "symmetry": _symmetry(values, mirrored, ts, tol),
-        "variation_diminishing": _variation_diminishing(values, probes, np.random.default_rng(seed)),
+        "variation_diminishing": variation_diminishing(values, probes, seed),
         "linear_independence": _linear_independence(values),
         "endpoint_interpolation": _endpoint_interpolation(values, tol),
     }
@@ -319,24 +341,47 @@ def symbolic_basis(form: str, t=None) -> list:
     return [sp.expand(sum(table[j, i] * t**j for j in range(4))) for i in range(4)]
 
 
-def _exact_functions(functions, t, t0, t1) -> list:
+def _exact_functions(functions, t, t0, t1, name: str = "functions") -> list:
     """The functions as cancelled SymPy rational functions of t, checked to be finite on [t0, t1]."""
     sp = _sympy()
     if isinstance(functions, (str, bytes)) or not hasattr(functions, "__len__") or len(functions) == 0:
-        raise ValueError(f"functions: expected a non-empty sequence of SymPy expressions, got {functions!r}"[:160])
+        raise ValueError(f"{name}: expected a non-empty sequence of SymPy expressions, got {functions!r}"[:160])
     f = [sp.cancel(sp.sympify(e)) for e in functions]
     for i, e in enumerate(f):
         if not e.free_symbols <= {t} or not e.is_rational_function(t):
-            raise ValueError(f"functions: f{i} = {e} is not a rational function of {t} alone")
+            raise ValueError(f"{name}: f{i} = {e} is not a rational function of {t} alone")
         poles = [r for r in sp.Poly(sp.fraction(e)[1], t).real_roots() if t0 <= r <= t1]
         if poles:
-            raise ValueError(f"functions: f{i} = {e} has a pole at t = {poles[0]} inside [{t0}, {t1}]")
+            raise ValueError(f"{name}: f{i} = {e} has a pole at t = {poles[0]} inside [{t0}, {t1}]")
     return f
 
 
-def _exact_minimum(e, t, t0, t1):
-    """Smallest value of a rational function e of t without poles on [t0, t1]: at an end or where e' = 0."""
+def _symbol_and_domain(t, domain) -> tuple:
+    """The checked SymPy symbol t and the domain (t0, t1) as exact SymPy numbers."""
     sp = _sympy()
+    if not isinstance(t, sp.Symbol):
+        raise TypeError(f"t: expected a SymPy Symbol, got {type(t).__name__}")
+    t0, t1 = (sp.nsimplify(v) for v in as_interval(domain, "domain"))
+    return t0, t1
+
+
+def exact_minimum(expression, t, domain=(0, 1)):
+    """The exact smallest value of a rational function of t on the domain [t0, t1]: Notes §5, property 2.
+
+    expression: a SymPy expression, rational in the Symbol t and without poles
+    on the domain. The minimum of a function that is smooth on [t0, t1] sits at
+    an end of the interval or where its derivative vanishes; for e = p/q that
+    is a root of p' q - p q', found exactly by SymPy.
+
+    >>> import sympy as sp
+    >>> from cagd_ref.blending_properties import exact_minimum, symbolic_basis
+    >>> t = sp.Symbol("t")
+    >>> [exact_minimum(f, t) for f in symbolic_basis("timmer", t)]   # Timmer's f0 and f3 dip to -1/27
+    [-1/27, 0, 0, -1/27]
+    """
+    sp = _sympy()
+    t0, t1 = _symbol_and_domain(t, domain)
+    (e,) = _exact_functions([expression], t, t0, t1, name="expression")
     numerator, denominator = sp.fraction(e)
     slope = sp.Poly(sp.diff(numerator, t) * denominator - numerator * sp.diff(denominator, t), t)
     inside = [r for r in (slope.real_roots() if not slope.is_zero else []) if t0 < r < t1]
@@ -344,7 +389,7 @@ def _exact_minimum(e, t, t0, t1):
 
 
 def _exact_hull(f, t, t0, t1, unity: Verdict) -> Verdict:
-    minima = [_exact_minimum(e, t, t0, t1) for e in f]
+    minima = [exact_minimum(e, t, (t0, t1)) for e in f]
     negative = [i for i, m in enumerate(minima) if m < 0]
     if negative:
         return Verdict(False, f"f{negative[0]} reaches {minima[negative[0]]} < 0 on [{t0}, {t1}]")
@@ -369,7 +414,8 @@ def _exact_independence(f, t) -> Verdict:
     numerators = [sp.Poly(sp.cancel(e * common), t) for e in f]
     degree = max(p.degree() for p in numerators)
     rank = sp.Matrix([[p.coeff_monomial(t**j) for j in range(degree + 1)] for p in numerators]).rank()
-    reason = f"the numerators over the common denominator {common} have a coefficient matrix of rank {rank} (of {len(f)})"
+    reason = (f"the numerators over the common denominator {common} have a coefficient matrix of rank {rank} "
+              f"(of {len(f)})")
     return Verdict(rank == len(f), reason)
 
 
@@ -383,9 +429,7 @@ def symbolic_properties(functions, t, domain=(0, 1)) -> dict[str, Verdict]:
     denominators and ask whether the numerators' coefficient vectors are independent.
     """
     sp = _sympy()
-    if not isinstance(t, sp.Symbol):
-        raise TypeError(f"t: expected a SymPy Symbol, got {type(t).__name__}")
-    t0, t1 = (sp.nsimplify(v) for v in as_interval(domain, "domain"))
+    t0, t1 = _symbol_and_domain(t, domain)
     f = _exact_functions(functions, t, t0, t1)
     n = len(f) - 1
     total = sp.cancel(sum(f) - 1)

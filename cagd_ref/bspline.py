@@ -28,6 +28,7 @@ from .polynomials import BLOCK
 
 __all__ = [
     "de_boor",
+    "de_boor_plain",
     "de_boor_triangle",
     "insert_knot",
     "insert_knots",
@@ -168,7 +169,15 @@ def de_boor(points, knots, t) -> np.ndarray:
     the domain -> (d,), or k numbers -> (k, d). Each t's span is found with a
     binary search; then, a block of parameters at a time, the n+1 control
     points of each span are gathered coordinate by coordinate and the triangle
-    of affine combinations runs on all of them together.
+    of affine combinations runs on all of them together. It computes what
+    `de_boor_plain` computes (the teaching form), tuned for many parameters.
+
+    >>> from cagd_ref.bspline import de_boor
+    >>> quartic = [(1, 1), (1, 4), (4, 7), (7, 4), (7, 1)]   # the quartic Bézier curve of §6.7, over [1, 5]
+    >>> de_boor(quartic, [1, 1, 1, 1, 5, 5, 5, 5], [1.0, 3.0, 5.0]).tolist()
+    [[1.0, 1.0], [4.0, 4.75], [7.0, 1.0]]
+
+    Ref: C. de Boor, On calculating with B-splines, J. Approx. Theory 6, 1972.
     """
     pts, kn, n = _spline(points, knots)
     ts, scalar = as_parameter(t)
@@ -190,6 +199,37 @@ def de_boor(points, knots, t) -> np.ndarray:
             level[:, :count] = (1 - alpha) * level[:, :count] + alpha * level[:, 1 : count + 1]
         result[:, block] = level[:, 0]
     return result[:, 0] if scalar else result.T
+
+
+def de_boor_plain(points, knots, t) -> np.ndarray:
+    """The de Boor algorithm in its plain textbook form (the teaching form the chapter shows). Notes §6.8.
+
+    points: (c, d); knots: (c+n-1,). t: a number in the domain -> (d,), or k
+    numbers -> (k, d). For t in the span [t_j, t_(j+1)) the triangle starts from
+    P_(j-n+1) ... P_(j+1); level r replaces, in the label of point i, the knot
+    t_(i-1) by t: P^r_i = ((t_(i+n-r) - t) P^(r-1)_(i-1) + (t - t_(i-1)) P^(r-1)_i) / (t_(i+n-r) - t_(i-1)),
+    for every parameter at once. `de_boor` computes the same points, tuned for
+    very many parameters.
+
+    >>> from cagd_ref.bspline import de_boor_plain
+    >>> quartic = [(1, 1), (1, 4), (4, 7), (7, 4), (7, 1)]   # the quartic Bézier curve of §6.7, over [1, 5]
+    >>> de_boor_plain(quartic, [1, 1, 1, 1, 5, 5, 5, 5], 3.0).tolist()
+    [4.0, 4.75]
+
+    Ref: C. de Boor, On calculating with B-splines, J. Approx. Theory 6, 1972.
+    """
+    pts, kn, n = _spline(points, knots)
+    ts, scalar = as_parameter(t)
+    _in_domain(ts, kn, n)
+    j = _spans(kn, n, ts)[:, None]  # (k, 1): t_j <= t < t_(j+1)
+    tau = ts[:, None]
+    level = pts[j - n + 1 + np.arange(n + 1)]  # (k, n+1, d): the span's control points
+    for r in range(1, n + 1):
+        i = j - n + 1 + r + np.arange(n + 1 - r)  # the indices of the points of level r
+        alpha = ((tau - kn[i - 1]) / (kn[i + n - r] - kn[i - 1]))[..., None]
+        level = (1 - alpha) * level[:, :-1] + alpha * level[:, 1:]
+    result = level[:, 0]
+    return result[0] if scalar else result
 
 
 def de_boor_triangle(points, knots, t) -> tuple[list[np.ndarray], int]:
@@ -217,6 +257,16 @@ def insert_knot(points, knots, t) -> tuple[np.ndarray, np.ndarray]:
     With t in the span [t_j, t_(j+1)], the n-1 points P_(j-n+2) ... P_j are
     replaced by n new ones; new point m (label containing t) is
     ((t_(m+n-1) - t) P_(m-1) + (t - t_(m-1)) P_m) / (t_(m+n-1) - t_(m-1)).
+
+    >>> from cagd_ref.bspline import insert_knot
+    >>> quartic = [(1, 1), (1, 4), (4, 7), (7, 4), (7, 1)]   # the notes' example: knots [1111 5555], insert 3
+    >>> points, knots = insert_knot(quartic, [1, 1, 1, 1, 5, 5, 5, 5], 3.0)
+    >>> points.tolist()
+    [[1.0, 1.0], [1.0, 2.5], [2.5, 5.5], [5.5, 5.5], [7.0, 2.5], [7.0, 1.0]]
+    >>> knots.tolist()
+    [1.0, 1.0, 1.0, 1.0, 3.0, 5.0, 5.0, 5.0, 5.0]
+
+    Ref: W. Boehm, Inserting new knots into B-spline curves, CAD 12(4), 1980.
     """
     pts, kn, n = _spline(points, knots)
     tau = as_scalar(t, "t")
@@ -247,6 +297,16 @@ def bezier_segments(points, knots) -> np.ndarray:
     Every distinct knot value in the domain is inserted until it has
     multiplicity n; then the n+1 control points of each span [a, b] carry the
     polar labels f(a, ..., a, b, ..., b), which are its Bézier control points.
+
+    >>> from cagd_ref.bspline import bezier_segments
+    >>> refined = [(1, 1), (1, 2.5), (2.5, 5.5), (5.5, 5.5), (7, 2.5), (7, 1)]   # §6.7: the quartic with knot 3
+    >>> halves = bezier_segments(refined, [1, 1, 1, 1, 3, 5, 5, 5, 5])
+    >>> halves.shape                                   # two quartic Bézier curves, over [1, 3] and [3, 5]
+    (2, 5, 2)
+    >>> halves[0].tolist()
+    [[1.0, 1.0], [1.0, 2.5], [1.75, 4.0], [2.875, 4.75], [4.0, 4.75]]
+
+    Ref: W. Boehm, Inserting new knots into B-spline curves, CAD 12(4), 1980.
     """
     pts, kn, n = _spline(points, knots)
     values, counts = np.unique(kn, return_counts=True)
@@ -301,6 +361,15 @@ def blossom(points, knots, args) -> np.ndarray:
     the polar value is ambiguous and a ValueError says so. The labels
     f(t_i, ..., t_(i+n-1)) = P_i of control points that act on the curve
     always pass, and so do arguments inside one span. Arguments outside [t_0, t_(c+n-2)] are rejected.
+
+    >>> from cagd_ref.bspline import blossom
+    >>> quartic = [(1, 1), (1, 4), (4, 7), (7, 4), (7, 1)]   # §6.7: the quartic over [1, 5]
+    >>> blossom(quartic, [1, 1, 1, 1, 5, 5, 5, 5], [1, 1, 3, 5]).tolist()   # f(1, 1, 3, 5) in the notes
+    [2.5, 5.5]
+    >>> blossom(quartic, [1, 1, 1, 1, 5, 5, 5, 5], [3, 5, 1, 1]).tolist()   # symmetric in its arguments
+    [2.5, 5.5]
+
+    Ref: L. Ramshaw (1989), Blossoms are polar forms, CAGD 6.
     """
     pts, kn, n = _spline(points, knots)
     u = _as_arguments(args, n)
@@ -336,7 +405,10 @@ def polar_values(points, knots, labels) -> np.ndarray:
 
 
 def elevated_polar_values(points, knots, labels) -> np.ndarray:
-    """Control points of the degree n+1 form at labels (k, n+1) -> (k, d): the mean of the n+1 polar values without one argument. Notes §6.13.5."""
+    """Control points of the degree n+1 form at labels (k, n+1) -> (k, d). Notes §6.13.5.
+
+    Each is the mean of the n+1 degree-n polar values of its label with one argument left out.
+    """
     u = as_float_array(labels, "labels")
     if u.ndim != 2:
         raise ValueError(f"labels: expected shape (k, n+1), got {u.shape}")
@@ -382,7 +454,9 @@ def power_blossom(coeffs, args):
         raise ValueError(f"coeffs: expected shape (m+1,) or (m+1, d), got {a.shape}")
     u = as_float_array(args, "args")
     if u.ndim != 1 or len(u) < len(a) - 1:
-        raise ValueError(f"args: a degree-{len(a) - 1} polynomial needs at least {len(a) - 1} arguments, got shape {u.shape}")
+        raise ValueError(
+            f"args: a degree-{len(a) - 1} polynomial needs at least {len(a) - 1} arguments, got shape {u.shape}"
+        )
     n = len(u)
     e = _elementary_symmetric(u)[: len(a)]
     weights = e / np.array([comb(n, i) for i in range(len(a))], dtype=float)
@@ -397,6 +471,16 @@ def bspline_basis(knots, degree: int, i: int, t):
     """Values of the i-th basis function B_i^n: the explicit B-spline with coefficient 1 at i, 0 elsewhere. Notes §6.14.
 
     knots: (c+n-1,); 0 <= i < c. t in the domain: a number -> float, k numbers -> (k,).
+
+    >>> from cagd_ref.bspline import bspline_basis
+    >>> knots = [0, 0, 0, 2, 3, 4, 5, 5, 5]            # Figure 6.28's cubic, seven basis functions
+    >>> [round(bspline_basis(knots, 3, 2, t), 6) for t in (0.0, 5 / 3, 2.0, 5.0)]   # the function of f(0, 2, 3)
+    [0.0, 0.552984, 0.555556, 0.0]
+    >>> round(sum(bspline_basis(knots, 3, i, 2.5) for i in range(7)), 12)         # a partition of unity
+    1.0
+
+    Ref: C. de Boor, On calculating with B-splines, J. Approx. Theory 6, 1972; M. G. Cox, The numerical
+    evaluation of B-splines, J. Inst. Maths Applics 10, 1972.
     """
     kn, n = _knots_of_degree(knots, degree)
     c = len(kn) - n + 1
@@ -422,6 +506,10 @@ def basis_matrix(knots, degree: int, t) -> np.ndarray:
     B_m^p = ω_m^p B_m^(p-1) + (1 - ω_(m+1)^p) B_(m+1)^(p-1) with
     ω_m^p(t) = (t - u_m) / (u_(m+p) - u_m), or 0 where u_(m+p) = u_m, on the
     knots padded with one copy of each end knot (the c + n + 1 convention).
+    A number t gives one row, (1, c).
+
+    Ref: C. de Boor, On calculating with B-splines, J. Approx. Theory 6, 1972; M. G. Cox, The numerical
+    evaluation of B-splines, J. Inst. Maths Applics 10, 1972.
     """
     kn, n = _knots_of_degree(knots, degree)
     ts, _ = as_parameter(t)
@@ -439,7 +527,12 @@ def basis_matrix(knots, degree: int, t) -> np.ndarray:
 
 
 def greville(knots, degree: int) -> np.ndarray:
-    """Greville abscissae (t_i + ... + t_(i+n-1)) / n, one per control point: shape (c,). Notes §6.9."""
+    """Greville abscissae (t_i + ... + t_(i+n-1)) / n, one per control point: shape (c,). Notes §6.9, §6.14.
+
+    >>> from cagd_ref.bspline import greville
+    >>> np.round(greville([0, 0, 0, 2, 3, 4, 5, 5, 5], 3), 6).tolist()   # Figure 6.28: 0, 2/3, 5/3, 3, 4, 14/3, 5
+    [0.0, 0.666667, 1.666667, 3.0, 4.0, 4.666667, 5.0]
+    """
     kn, n = _knots_of_degree(knots, degree)
     sums = np.convolve(kn, np.ones(n), mode="valid")
     return sums / n
@@ -574,7 +667,8 @@ def elevate(points, knots) -> tuple[np.ndarray, np.ndarray]:
 
     The new control point with label (u_0, ..., u_n) is the degree n+1 polar
     value F(u_0..u_n), the mean of the n+1 old polar values f(u without u_j).
-    Returns (points (c', d), knots) with c' = c + (number of distinct knots in the domain).
+    Returns (points (c', d), knots) with c' = c + m - 1, m the number of distinct
+    knot values in the domain, its two ends included (a Bézier curve: c + 1).
     """
     pts, kn, n = _spline(points, knots)
     a, b = kn[n - 1], kn[len(kn) - n]
@@ -619,7 +713,7 @@ def periodic_closed(points, degree: int) -> tuple[np.ndarray, np.ndarray]:
 
 
 def circle_approximation(count: int) -> tuple[np.ndarray, np.ndarray, float]:
-    """The periodic uniform cubic whose `count` control points on a regular polygon best approximate the unit circle. Notes §6.14.4.
+    """The periodic uniform cubic on a regular `count`-gon that best approximates the unit circle. Notes §6.14.4.
 
     With control points at radius R and angle step θ = 2π/count, the curve's
     radius is largest at the knots, R (2 + cos θ)/3, and smallest midway,

@@ -141,6 +141,17 @@ def split_interval(points, intervals, index: int, fraction: float, *, degree: in
     Open curve (degree=None): the interval must lie inside the domain (not an
     end-condition interval). Closed curve (degree=n): any interval; new point
     positions follow the polar labels of the periodic knots.
+
+    >>> from cagd_ref.knot_intervals import split_interval
+    >>> pentagon = [(0, 0), (4, -0.5), (5.5, 2.5), (2.5, 5), (-1, 3)]   # a closed cubic, as in Figure 6.15
+    >>> points, intervals = split_interval(pentagon, [3, 1, 2, 2, 1], 0, 1 / 3, degree=3)
+    >>> intervals.tolist()                             # the interval 3 split into 1 and 2
+    [1.0, 2.0, 1.0, 2.0, 2.0, 1.0]
+    >>> len(points)
+    6
+    >>> figure_6_11 = [(0, 0), (1, 2), (3, 3), (5, 2.5), (7, 0.5), (8, -1)]   # an open cubic, knots 1, 2, 3, 4, 6, ...
+    >>> split_interval(figure_6_11, [1, 1, 1, 2, 3, 1, 1], 4, 1 / 3)[1].tolist()
+    [1.0, 1.0, 1.0, 2.0, 1.0, 2.0, 1.0, 1.0]
     """
     f = as_scalar(fraction, "fraction")
     if not 0 <= f <= 1:
@@ -318,7 +329,7 @@ def elevate_intervals(points, intervals, *, degree: int | None = None):
 
 
 def cubic_basis_from_intervals(intervals, t):
-    """The cubic basis function over knots 0, d_0, d_0+d_1, ... (support [t_1, t_5]) by its four pieces. Notes §6.14.1, (6.10)-(6.13).
+    """The cubic basis function over the knots 0, d_0, d_0+d_1, ... by its four pieces. Notes §6.14.1, (6.10)-(6.13).
 
     intervals: the four knot intervals (d_0, d_1, d_2, d_3) of the support, t
     measured from its start t_1 = 0: a number -> float, k numbers -> (k,).

@@ -6,7 +6,6 @@ their own rather than changing one that other test files rely on.
 
 from __future__ import annotations
 
-import copy
 from math import comb
 
 import numpy as np
@@ -15,28 +14,8 @@ from numpy.polynomial import Polynomial
 
 # ---------------------------------------------------------------------------
 # Core reference modules (test_geometry, test_bezier, test_polynomials,
-# test_continuity): independent peers and the "inputs are not modified" check.
+# test_continuity): independent peers (the contract test checks inputs are not modified).
 # ---------------------------------------------------------------------------
-
-
-@pytest.fixture
-def unchanged():
-    """Call ``func(*args, **kwargs)`` and fail if the call modified any of its arguments.
-
-    Every array-like argument is compared with a deep copy taken before the call;
-    the function's result is returned so the test can go on checking it.
-    """
-
-    def call(func, *args, **kwargs):
-        before = copy.deepcopy((args, kwargs))
-        result = func(*args, **kwargs)
-        for old, new in zip(list(before[0]) + list(before[1].values()), list(args) + list(kwargs.values())):
-            if old is None:
-                continue
-            np.testing.assert_array_equal(np.asarray(new), np.asarray(old), err_msg=f"{func.__name__} changed its input")
-        return result
-
-    return call
 
 
 def _bezier_polynomials(points, interval=(0.0, 1.0)) -> list[Polynomial]:

@@ -54,7 +54,9 @@ def control_point_labels(knots, degree: int, name: str = "P") -> list[str]:
 
 
 def triangle_labels(knots, degree: int, span: int, t: float) -> list[list[str]]:
-    """Polar labels of the de Boor triangle at t on span j: level r point i is f(t^r, t_(j-n+1+i+r) ... t_(j+i)). Notes §6.8.
+    """Polar labels of the de Boor triangle at t on span j. Notes §6.8.
+
+    Point i of level r is f(t^r, t_(j-n+1+i+r) ... t_(j+i)).
 
     Returns one list of strings per level (n+1-r labels on level r).
     """
@@ -82,7 +84,7 @@ def segment_samples(points, knots, per_segment: int = SEGMENT_SAMPLES) -> tuple[
 
 
 def closed_curve_points(points, intervals, degree: int, t) -> np.ndarray:
-    """Points of a closed periodic B-spline (knot intervals, knot origin at the start of d_0) at any t. Notes §6.5, §6.13.
+    """Points of a closed periodic B-spline with knot intervals (origin at the start of d_0), any t. Notes §6.5, §6.13.
 
     t is taken modulo the period sum(intervals), so two labellings of the same
     curve with the same origin can be compared at the same parameters.
@@ -110,7 +112,7 @@ def _point_labels(labels, points: np.ndarray, knots, n: int):
 def plot_bspline(ax, points, knots, labels=True, knot_marks: bool = True, knot_values: bool = True,
                  bezier_polygons: bool = False, colors=SEGMENT_COLORS, polygon_legend: str | None = "control polygon",
                  **style):
-    """Draw a planar B-spline: control polygon, each segment in its own colour, the knots as points on the curve. Notes §6.2, §6.3.
+    """Draw a planar B-spline: its polygon, each segment in its own colour, the knots on the curve. Notes §6.2, §6.3.
 
     points: (c, 2); knots: (c+n-1,). labels: True (polar labels f(...)),
     "index" (P_0, P_1, ...), False, or c strings. `knot_marks` ticks the
@@ -122,7 +124,7 @@ def plot_bspline(ax, points, knots, labels=True, knot_marks: bool = True, knot_v
     n = degree(pts, knots)
     plot_control_polygon(ax, pts, labels=_point_labels(labels, pts, knots, n), legend=polygon_legend)
     intervals, samples = segment_samples(pts, knots)
-    for k, (span, curve) in enumerate(zip(intervals, samples)):
+    for k, curve in enumerate(samples):
         color = colors[k % len(colors)]
         ax.plot(*curve.T, **{"color": color, "linewidth": 2.2, **style})
     if knot_marks:
@@ -130,7 +132,8 @@ def plot_bspline(ax, points, knots, labels=True, knot_marks: bool = True, knot_v
     if knot_marks and knot_values:
         for span, curve in zip(intervals, samples):
             ax.annotate(f"t={knot_label(span[0])}", curve[0], xytext=(3, -12), textcoords="offset points", fontsize=7)
-        ax.annotate(f"t={knot_label(intervals[-1, 1])}", samples[-1, -1], xytext=(3, -12), textcoords="offset points", fontsize=7)
+        ax.annotate(f"t={knot_label(intervals[-1, 1])}", samples[-1, -1], xytext=(3, -12), textcoords="offset points",
+                    fontsize=7)
     if bezier_polygons:
         for k, segment in enumerate(bezier_segments(pts, knots)):
             ax.plot(*segment.T, "s:", color=colors[k % len(colors)], markersize=3, linewidth=1, alpha=0.8)
@@ -163,7 +166,7 @@ def interval_label_positions(points, intervals, degree: int | None = None) -> np
 
 
 def _label_normals(places: np.ndarray, closed: bool) -> np.ndarray:
-    """Unit normals (m, 2) to the polygon through the label places: outward for closed polygons, to the left for open ones."""
+    """Unit normals (m, 2) to the polygon through the label places: outward when closed, to the left when open."""
     if closed:
         tangents = np.roll(places, -1, axis=0) - np.roll(places, 1, axis=0)
     else:

@@ -33,7 +33,9 @@ def _cubic_polygon(points, default: np.ndarray) -> np.ndarray:
     """Four planar control points (4, 2) given to a factory, or a copy of the default."""
     pts = _control_points(points, default, min_count=4)
     if len(pts) != 4:
-        raise ValueError(f"points: the cubic forms have exactly 4 control points, expected shape (4, 2), got {pts.shape}")
+        raise ValueError(
+            f"points: the cubic forms have exactly 4 control points, expected shape (4, 2), got {pts.shape}"
+        )
     return pts
 
 
@@ -78,7 +80,8 @@ class BlendingFormsExplorer(ControlPointEditor):
 
     def describe(self, state: dict) -> str:
         rows = "".join(
-            f"<tr><td style='color:{COLOR_CODES[form]}'>{FORM_NAMES[form]}</td><td>{_fmt(state['midpoints'][form])}</td>"
+            f"<tr><td style='color:{COLOR_CODES[form]}'>{FORM_NAMES[form]}</td>"
+            f"<td>{_fmt(state['midpoints'][form])}</td>"
             f"<td>{state['hull_escape'][form]:.3g}</td></tr>"
             for form in FORMS
         )
@@ -115,13 +118,15 @@ class VariationDiminishingExplorer(Explorer):
         reach = float(np.linalg.norm(high - low)) / 2 + margin
         controls = {
             "angle": _slider(widgets.FloatSlider, "angle (°)", min=0.0, max=180.0, step=1.0, value=0.0),
-            "offset": _slider(widgets.FloatSlider, "offset", min=-round(reach, 1), max=round(reach, 1), step=0.02, value=0.0),
-            "form": widgets.Dropdown(options=list(FORMS), value=form, description="form", layout=widgets.Layout(width="300px")),
+            "offset": _slider(widgets.FloatSlider, "offset", min=-round(reach, 1), max=round(reach, 1), step=0.02,
+                              value=0.0),
+            "form": widgets.Dropdown(options=list(FORMS), value=form, description="form",
+                                     layout=widgets.Layout(width="300px")),
         }
         super().__init__(controls)
 
     def line(self, angle: float, offset: float) -> np.ndarray:
-        """The line (a, b, c), a x + b y + c = 0, at `angle` degrees through the centroid moved `offset` along its normal."""
+        """The line (a, b, c), a x + b y + c = 0, at `angle` degrees, `offset` from the centroid along its normal."""
         theta = np.radians(angle)
         normal = np.array([-np.sin(theta), np.cos(theta)])
         return np.append(normal, -(normal @ self.centre + offset))

@@ -30,6 +30,7 @@ from cagd_ref.bspline import (
 )
 from cagd_ref.knot_intervals import split_interval
 
+from ..examples import notes_example
 from ..plotting.bsplines import (
     closed_curve_points,
     control_point_labels,
@@ -57,17 +58,19 @@ __all__ = [
 ]
 
 # A wavy open polygon of eight points: a cubic over it has five segments with Bézier end knots.
-CHAPTER_POINTS = np.array([[0.0, 0.0], [1.0, 2.2], [3.0, 3.0], [4.5, 0.8], [6.5, 0.5], [8.0, 2.8], [10.0, 3.2], [11.0, 0.8]])
+CHAPTER_POINTS = np.array(
+    [[0.0, 0.0], [1.0, 2.2], [3.0, 3.0], [4.5, 0.8], [6.5, 0.5], [8.0, 2.8], [10.0, 3.2], [11.0, 0.8]]
+)
 CHAPTER_KNOTS = bezier_end_knots(len(CHAPTER_POINTS), 3)
-# A closed pentagon with the knot intervals of the notes' splitting example (Figure 6.15 has an interval 3).
+# A closed pentagon of our own with the knot intervals 3, 1, 2, 2, 1 of the notes' splitting example (Figure 6.15).
 PENTAGON = np.array([[0.0, 0.0], [4.0, -0.5], [5.5, 2.5], [2.5, 5.0], [-1.0, 3.0]])
-PENTAGON_INTERVALS = np.array([3.0, 1.0, 2.0, 2.0, 1.0])
+PENTAGON_INTERVALS = notes_example("06.interval_splitting").inputs["intervals"]
 BASIS_SAMPLES = 301
 SAME_CURVE_TOL = 1e-9
 
 
 def _bare(ax) -> None:
-    """Drop ticks and axis labels: a control polygon's coordinates say nothing, and tick labels are the largest cost of a redraw."""
+    """Drop ticks and axis labels: a polygon's coordinates say nothing, and tick labels cost most in a redraw."""
     ax.set(xticks=[], yticks=[], xlabel="", ylabel="")
 
 
@@ -108,7 +111,7 @@ def _merge_knots(values: list[float], multiplicity: int) -> list[float]:
 
 
 class KnotVectorEditor(_TwoPanels, Explorer):
-    """Interior knots on sliders and a multiplicity: the curve, its Bézier segments and the basis functions. Notes §6.2-6.4, §6.14."""
+    """Interior knots on sliders and a multiplicity: curve, Bézier segments, basis functions. Notes §6.2-6.4, §6.14."""
 
     def __init__(self, points=None, degree: int = 3):
         self.points = _control_points(points, CHAPTER_POINTS)
@@ -124,7 +127,8 @@ class KnotVectorEditor(_TwoPanels, Explorer):
             f"u{k}": _slider(widgets.FloatSlider, f"u{k}", min=0.05, max=self.end - 0.05, step=0.05, value=float(k))
             for k in range(1, count + 1)
         }
-        controls["multiplicity"] = widgets.Dropdown(description="mult. of u2", options=list(range(1, self.degree + 1)), value=1)
+        controls["multiplicity"] = widgets.Dropdown(description="mult. of u2", options=list(range(1, self.degree + 1)),
+                                                    value=1)
         controls["spacing"] = widgets.Dropdown(description="spacing", options=["sliders", "uniform"], value="sliders")
         super().__init__(controls)
 
@@ -197,21 +201,22 @@ def knot_vector_editor(points=None, degree: int = 3) -> KnotVectorEditor:
 
 
 def _spline_inputs(points, knots) -> tuple[np.ndarray, np.ndarray, int]:
-    """An explorer's planar control points (c, 2), knots (notes' convention) and degree; the chapter's cubic by default."""
+    """Planar control points (c, 2), knots (notes' convention) and degree; default: the chapter's cubic."""
     pts = _control_points(points, CHAPTER_POINTS)
     kn = CHAPTER_KNOTS.copy() if knots is None else as_float_array(knots, "knots")
     return pts, kn, degree(pts, kn)
 
 
 class DeBoorExplorer(Explorer):
-    """The de Boor triangle at t: the n+1 control points of t's span, every level of affine combinations, P(t). Notes §6.8."""
+    """The de Boor triangle at t: the span's n+1 control points, each level of affine combinations, P(t). Notes §6.8."""
 
     figsize = (6.5, 4.8)
 
     def __init__(self, points=None, knots=None):
         self.points, self.knots, self.degree = _spline_inputs(points, knots)
         a, b = domain(self.knots, self.degree)
-        t = _slider(widgets.FloatSlider, "t", min=a, max=b, step=0.01, value=round(0.4 * a + 0.6 * b, 2), readout_format=".2f")
+        t = _slider(widgets.FloatSlider, "t", min=a, max=b, step=0.01, value=round(0.4 * a + 0.6 * b, 2),
+                    readout_format=".2f")
         step = _slider(widgets.IntSlider, "levels", min=0, max=self.degree, value=self.degree)
         super().__init__({"t": t, "step": step})
 
@@ -240,7 +245,8 @@ class DeBoorExplorer(Explorer):
         if step == self.degree:
             ax.plot(*state["point"], "k*", markersize=13, label=f"P({state['t']:.2f})")
         j = state["span"]
-        ax.set_title(f"de Boor at t = {state['t']:.2f}, span [{knot_label(self.knots[j])}, {knot_label(self.knots[j + 1])}]", fontsize=10)
+        span = f"[{knot_label(self.knots[j])}, {knot_label(self.knots[j + 1])}]"
+        ax.set_title(f"de Boor at t = {state['t']:.2f}, span {span}", fontsize=10)
         ax.legend(fontsize=7, loc="lower center", ncol=3)
         _bare(ax)
 
@@ -270,7 +276,7 @@ def _new_label_indices(old_knots: np.ndarray, new_knots: np.ndarray, n: int) -> 
 
 
 class KnotInsertionExplorer(Explorer):
-    """Boehm's knot insertion, once or repeatedly at the same t: old and new polygons over one unchanged curve. Notes §6.7."""
+    """Boehm's knot insertion, once or repeatedly at one t: old and new polygons, one unchanged curve. Notes §6.7."""
 
     figsize = (6.5, 4.8)
 
@@ -279,7 +285,8 @@ class KnotInsertionExplorer(Explorer):
         a, b = domain(self.knots, self.degree)
         self.check_ts = np.linspace(a, b, 97)
         self.curve = de_boor(self.points, self.knots, self.check_ts)
-        t = _slider(widgets.FloatSlider, "t", min=a, max=b, step=0.01, value=round(0.55 * a + 0.45 * b, 2), readout_format=".2f")
+        t = _slider(widgets.FloatSlider, "t", min=a, max=b, step=0.01, value=round(0.55 * a + 0.45 * b, 2),
+                    readout_format=".2f")
         times = _slider(widgets.IntSlider, "times", min=1, max=self.degree, value=1)
         super().__init__({"t": t, "times": times})
 
@@ -308,16 +315,19 @@ class KnotInsertionExplorer(Explorer):
         ax.plot(*new.T, "o", color="C3", markersize=8, markerfacecolor="white", markeredgewidth=2, label="new points")
         labels = control_point_labels(state["knots"], self.degree)
         for i in state["new"]:
-            ax.annotate(labels[i], state["points"][i], xytext=(4, 5), textcoords="offset points", fontsize=7, color="C3")
+            ax.annotate(labels[i], state["points"][i], xytext=(4, 5), textcoords="offset points", fontsize=7,
+                        color="C3")
         if state["point"] is not None:
             ax.plot(*state["point"], "k*", markersize=12, label=f"P({state['t']:.2f}) exposed")
-        ax.set_title(f"inserting t = {state['t']:.2f} {state['inserted']}×; curve moved by {state['deviation']:.1e}", fontsize=10)
+        ax.set_title(f"inserting t = {state['t']:.2f} {state['inserted']}×; curve moved by {state['deviation']:.1e}",
+                     fontsize=10)
         ax.legend(fontsize=7, loc="lower center", ncol=2)
         _bare(ax)
 
     def describe(self, state: dict) -> str:
         knots = ", ".join(knot_label(k) for k in state["knots"])
-        note = "" if state["inserted"] == self.values["times"] else f" (t already a knot: only {state['inserted']} more allowed)"
+        allowed = f" (t already a knot: only {state['inserted']} more allowed)"
+        note = "" if state["inserted"] == self.values["times"] else allowed
         return f"new knots [{html.escape(knots)}]{note}"
 
 
@@ -328,7 +338,7 @@ def _exposed_point(points: np.ndarray, knots: np.ndarray, n: int, t: float) -> n
 
 
 def knot_insertion_explorer(points=None, knots=None) -> KnotInsertionExplorer:
-    """Slider `t` for the new knot and `times` (1..n): insert t that many times (as far as multiplicity allows). Notes §6.7.
+    """Slider `t` for the new knot and `times` (1..n): insert t that many times (as multiplicity allows). Notes §6.7.
 
     `update` returns {"t", "inserted", "old_points", "old_knots", "points",
     "knots", "new" (indices of the points with new polar labels), "deviation"
@@ -379,7 +389,8 @@ class KnotIntervalExplorer(Explorer):
         self.check_ts = np.linspace(0.0, period, 101)
         self.curve = closed_curve_points(self.points, self.intervals, self.degree, self.check_ts)
         index = widgets.Dropdown(description="interval", options=list(range(len(self.points))), value=0)
-        fraction = _slider(widgets.FloatSlider, "fraction", min=0.0, max=1.0, step=0.01, value=1 / 3, readout_format=".2f")
+        fraction = _slider(widgets.FloatSlider, "fraction", min=0.0, max=1.0, step=0.01, value=1 / 3,
+                           readout_format=".2f")
         super().__init__({"index": index, "fraction": fraction})
 
     def compute(self, index: int, fraction: float) -> dict:
@@ -443,7 +454,8 @@ class LocalControlExplorer(Explorer):
         self.segments = bezier_segments(self.points, self.knots)
         self.intervals = bezier_segment_intervals(self.knots, self.degree)
         controls = {
-            "index": widgets.Dropdown(description="point", options=list(range(len(self.points))), value=len(self.points) // 2),
+            "index": widgets.Dropdown(description="point", options=list(range(len(self.points))),
+                                      value=len(self.points) // 2),
             "dx": _slider(widgets.FloatSlider, "dx", min=-3.0, max=3.0, step=0.05, value=0.0),
             "dy": _slider(widgets.FloatSlider, "dy", min=-3.0, max=3.0, step=0.05, value=1.5),
         }
@@ -462,7 +474,8 @@ class LocalControlExplorer(Explorer):
         moved[index] += (dx, dy)
         segments = bezier_segments(moved, self.knots)
         changed = np.flatnonzero(np.abs(segments - self.segments).max(axis=(1, 2)) > SAME_CURVE_TOL)
-        return {"index": index, "points": moved, "segments": segments, "changed": changed, "support": self.support(index)}
+        return {"index": index, "points": moved, "segments": segments, "changed": changed,
+                "support": self.support(index)}
 
     def draw(self, ax, state: dict) -> None:
         _, old = segment_samples(self.points, self.knots)

@@ -1,7 +1,8 @@
-"""cagd_course.plotting.bsplines: polar labels, segment samples and knot-interval label places (Notes §6.1-6.3, §6.13)."""
+"""cagd_course.plotting.bsplines: polar labels, segment samples, knot-interval label places (Notes §6.1-6.3, §6.13)."""
 
 import numpy as np
 
+from cagd_course.examples import notes_example
 from cagd_course.plotting import bsplines
 from cagd_ref.bspline import de_boor
 
@@ -10,8 +11,11 @@ KNOTS = np.array([0.0, 0.0, 0.0, 1.0, 2.5, 3.0, 4.0, 4.0, 4.0])  # cubic, 7 poin
 
 
 def test_control_point_labels_follow_the_notes_convention():
-    assert bsplines.control_point_labels([0, 0, 0, 1, 3, 4, 4, 4], 3) == [
-        "P(0,0,0)", "P(0,0,1)", "P(0,1,3)", "P(1,3,4)", "P(3,4,4)", "P(4,4,4)"]
+    # Figure 6.6.b: the knots [0, 0, 0, 1, 3, 4, 4, 4] label the points P(0,0,0), P(0,0,1), ..., P(4,4,4).
+    figure = notes_example("06.bezier_end_conditions")
+    labels = ["P(" + ",".join(str(int(k)) for k in row) + ")" for row in figure.results["labels"]]
+    assert bsplines.control_point_labels(*figure.args("knots", "degree")) == labels
+    assert labels[2] == "P(0,1,3)"
     assert bsplines.polar_label([2.5, 1 / 3], "f") == "f(2.5,0.333)"
 
 
@@ -36,4 +40,5 @@ def test_closed_curve_points_are_periodic():
     d = np.array([1.0, 2.0, 1.0, 1.5, 0.5])
     pentagon = np.array([[0, 0], [3, 0], [4, 2], [2, 4], [-1, 2]], dtype=float)
     ts = np.array([0.3, 1.7, 4.9])
-    assert np.allclose(bsplines.closed_curve_points(pentagon, d, 3, ts), bsplines.closed_curve_points(pentagon, d, 3, ts + d.sum()))
+    once_round = bsplines.closed_curve_points(pentagon, d, 3, ts + d.sum())
+    assert np.allclose(bsplines.closed_curve_points(pentagon, d, 3, ts), once_round)

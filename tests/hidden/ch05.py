@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from cagd_course.examples import notes_example
 from cagd_course.grading.suite import Case, Exercise, close
 from cagd_ref import blending
 
@@ -23,6 +24,8 @@ BAD = "bad input"
 ARCH = [(0.0, 0.0), (1.0, 2.0), (3.0, 2.5), (4.0, 0.5)]
 WAVE = [(0.0, 0.0), (1.0, 2.0), (2.0, 0.0), (3.0, 2.0), (4.0, 0.0), (5.0, 2.0)]
 SPACE = [(0.0, 0.0, 0.0), (1.0, 2.0, 0.5), (3.0, -1.0, 2.0), (4.0, 1.0, -1.0), (2.0, 2.0, 2.0)]
+MIDPOINT = notes_example("05.timmer_midpoint")  # t = 1/2: Timmer's curve passes through the midpoint of P1 P2
+TIMMER_ARCH = notes_example("05.timmer_arch")  # a course example of the Timmer-to-Bézier conversion
 
 
 def _ts(rng, low=0.0, high=1.0):
@@ -41,7 +44,7 @@ def _points(rng, low_count, high_count):
 
 def _basis_cases(rng):
     cases = [
-        Case(NOTES, (0.5,), visible=True),
+        Case(NOTES, MIDPOINT.args("t"), visible=True),
         Case(NOTES, ([0.0, 0.25, 0.5, 0.75, 1.0],), visible=True),
         Case(EDGE, (0.0,), visible=True),
         Case(EDGE, (1.0,), visible=True),
@@ -93,9 +96,9 @@ def overhauser_point_cases(rng):
 
 
 def timmer_to_bezier_cases(rng):
-    notes_cubic = np.array([(2.0, 1.0), (4.0, 5.0), (8.0, 6.0), (9.0, 2.0)])
+    notes_cubic = notes_example("02.hodograph_table").inputs["points"]
     cases = [
-        Case(NOTES, ([(0.0, 0.0), (3.0, 3.0), (6.0, 3.0), (9.0, 0.0)],), visible=True),
+        Case(NOTES, TIMMER_ARCH.args("points"), visible=True),
         # Q1 = (P0 + 3 P1)/4, Q2 = (P3 + 3 P2)/4 of the notes' example, for the cubic of chapter 2.
         Case(NOTES, (blending.from_bezier("timmer", notes_cubic),), visible=True),
         Case(EDGE, ([(1.0, 2.0)] * 4,), visible=True),

@@ -2,9 +2,12 @@
 
 A degree-n B-spline with c control points has c + n - 1 knots (no dummy end
 knots) and the domain [t_(n-1), t_(c-1)]. Fixed cases reuse the notes'
-examples: the quartic Bézier curve over [1, 5] with a knot inserted at 3, the
-cubic with knots 1 ... 8, the Bézier end conditions [0,0,0,1,3,4,4,4], the
-Greville example [0,0,0,2,3,4,5,5,5] and the knot intervals of Figure 6.11.
+examples, read from cagd_course/examples/ch06.toml: the quartic Bézier curve
+over [1, 5] with a knot inserted at 3, the cubic with knots 1 ... 8 and the
+labels of its extraction, the Bézier end conditions [0,0,0,1,3,4,4,4], the
+knots [0,0,0,2,3,4,5,5,5] with their Greville abscissae, the knot intervals of Figures 6.11-6.13
+and the splitting of the interval 3 of Figures 6.15-6.17 (the figures' control
+points are lost; the points are ours).
 Edge cases probe t at knots and at both ends of the domain, multiple knots,
 degree 1, non-uniform knots and closed curves; the random cases come from the
 generator the grader passes in.
@@ -14,6 +17,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from cagd_course.examples import notes_example
 from cagd_course.grading.suite import Case, Exercise, close
 from cagd_ref import bspline, knot_intervals
 
@@ -24,12 +28,15 @@ CLOSED = "closed curves"
 RANDOM = "random"
 BAD = "bad input"
 
-QUARTIC = [(1.0, 1.0), (1.0, 4.0), (4.0, 7.0), (7.0, 4.0), (7.0, 1.0)]  # §6.7, over [1, 5]
-QUARTIC_KNOTS = [1.0, 1.0, 1.0, 1.0, 5.0, 5.0, 5.0, 5.0]
-ONE_TO_EIGHT = [1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0]  # Figure 6.2.b: a cubic over [3, 6]
+# The notes' examples (cagd_course/examples/ch06.toml); the figures' control points are lost, SIX and SEVEN are ours.
+QUARTIC_EXAMPLE = notes_example("06.quartic_insertion")  # §6.7, over [1, 5], with the knot 3 inserted
+QUARTIC, QUARTIC_KNOTS, QUARTIC_T = QUARTIC_EXAMPLE.args("points", "knots", "t")
+ONE_TO_EIGHT = notes_example("06.bspline_polar_labels").inputs["knots"]  # Figure 6.2.b: a cubic over [3, 6]
 SIX = [(0.0, 0.0), (1.0, 3.0), (3.0, 4.0), (5.0, 3.5), (7.0, 1.0), (8.0, 0.0)]
-END_CONDITIONS = [0.0, 0.0, 0.0, 1.0, 3.0, 4.0, 4.0, 4.0]  # Figure 6.6.b: Bézier end conditions
-GREVILLE_KNOTS = [0.0, 0.0, 0.0, 2.0, 3.0, 4.0, 5.0, 5.0, 5.0]  # Figure 6.28
+END_CONDITIONS = notes_example("06.bezier_end_conditions").inputs["knots"]  # Figure 6.6.b: Bézier end conditions
+END_INSERTION = notes_example("06.knot_insertion").inputs["t"]  # §6.7: the knot 2 goes into END_CONDITIONS
+GREVILLE_KNOTS = notes_example("06.basis_functions").inputs["knots"]  # Figure 6.28
+EXTRACTION = notes_example("06.bezier_extraction").results  # §6.3: the polar labels met on the way to [3, 4]
 SEVEN = [(0.0, 0.0), (1.0, 2.0), (2.0, 3.0), (3.0, 1.0), (4.0, 2.0), (5.0, 4.0), (6.0, 1.0)]
 DOUBLE = [0.0, 0.0, 0.0, 1.0, 2.0, 2.0, 3.0, 3.0, 3.0]  # a cubic with a double knot at 2 (C1 there)
 POLYLINE = [(0.0, 0.0), (2.0, 1.0), (3.0, 4.0), (1.0, 5.0)]  # degree 1 with knots 0, 1, 3, 4
@@ -67,8 +74,10 @@ def _inside(rng, knots, n, k=None):
 
 def de_boor_cases(rng):
     cases = [
-        Case(NOTES, (QUARTIC, QUARTIC_KNOTS, 3.0), visible=True),
+        Case(NOTES, (QUARTIC, QUARTIC_KNOTS, QUARTIC_T), visible=True),
         Case(NOTES, (QUARTIC, QUARTIC_KNOTS, [1.0, 2.0, 3.0, 4.0, 5.0]), visible=True),
+        # The quartic after the insertion is the same curve.
+        Case(NOTES, (QUARTIC_EXAMPLE.results["points"], QUARTIC_EXAMPLE.results["knots"], np.linspace(1.0, 5.0, 9))),
         Case(NOTES, (SIX, ONE_TO_EIGHT, [3.0, 3.5, 4.0, 5.5, 6.0]), visible=True),
         Case(NOTES, (SIX, END_CONDITIONS, [0.0, 1.0, 2.0, 3.0, 4.0]), visible=True),
         Case(EDGE, (SIX, ONE_TO_EIGHT, 3.0), visible=True),  # the start of the domain
@@ -103,8 +112,8 @@ def de_boor_cases(rng):
 
 def insert_knot_cases(rng):
     cases = [
-        Case(NOTES, (QUARTIC, QUARTIC_KNOTS, 3.0), visible=True),
-        Case(NOTES, (SIX, END_CONDITIONS, 2.0), visible=True),
+        Case(NOTES, (QUARTIC, QUARTIC_KNOTS, QUARTIC_T), visible=True),
+        Case(NOTES, (SIX, END_CONDITIONS, END_INSERTION), visible=True),
         Case(NOTES, (SIX, ONE_TO_EIGHT, 4.5), visible=True),
         Case(NOTES, (SIX, ONE_TO_EIGHT, 4.0), visible=True),  # an existing knot becomes double
         Case(EDGE, (SIX, ONE_TO_EIGHT, 3.0), visible=True),  # the start of the domain
@@ -141,6 +150,7 @@ def bezier_segments_cases(rng):
         Case(NOTES, (SIX, ONE_TO_EIGHT), visible=True),
         Case(NOTES, (SIX, END_CONDITIONS), visible=True),
         Case(NOTES, (QUARTIC, QUARTIC_KNOTS), visible=True),  # a Bézier curve is its own segment
+        Case(NOTES, (QUARTIC_EXAMPLE.results["points"], QUARTIC_EXAMPLE.results["knots"]), visible=True),  # two halves
         Case(NOTES, (SEVEN, GREVILLE_KNOTS), visible=True),
         Case(EDGE, (SEVEN, DOUBLE), visible=True),  # a double knot
         Case(EDGE, (SEVEN, [0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 3.0, 3.0, 3.0]), visible=True),  # a triple knot (C0)
@@ -174,13 +184,13 @@ def _labels(points, knots, n):
 
 def blossom_cases(rng):
     cases = [
-        Case(NOTES, (SIX, ONE_TO_EIGHT, [1.0, 2.0, 3.0]), visible=True),  # a control point's own label
-        Case(NOTES, (SIX, ONE_TO_EIGHT, [2.0, 3.0, 3.0]), visible=True),
-        Case(NOTES, (SIX, ONE_TO_EIGHT, [4.0, 4.0, 5.0]), visible=True),
-        Case(NOTES, (SIX, ONE_TO_EIGHT, [3.0, 4.0, 4.0]), visible=True),
-        Case(NOTES, (SIX, ONE_TO_EIGHT, [3.0, 3.0, 3.0]), visible=True),
-        Case(NOTES, (QUARTIC, QUARTIC_KNOTS, [1.0, 3.0, 5.0, 5.0]), visible=True),
-        Case(NOTES, (SIX, END_CONDITIONS, [1.0, 2.0, 3.0]), visible=True),
+        Case(NOTES, (SIX, ONE_TO_EIGHT, EXTRACTION["acting_labels"][0]), visible=True),  # a control point's own label
+        Case(NOTES, (SIX, ONE_TO_EIGHT, EXTRACTION["helper_labels"][0]), visible=True),  # the helpers of §6.3
+        Case(NOTES, (SIX, ONE_TO_EIGHT, EXTRACTION["helper_labels"][1]), visible=True),
+        Case(NOTES, (SIX, ONE_TO_EIGHT, EXTRACTION["bezier_labels"][2]), visible=True),  # Bézier points of [3, 4]
+        Case(NOTES, (SIX, ONE_TO_EIGHT, EXTRACTION["bezier_labels"][0]), visible=True),
+        Case(NOTES, (QUARTIC, QUARTIC_KNOTS, QUARTIC_EXAMPLE.results["new_labels"][2]), visible=True),
+        Case(NOTES, (SIX, END_CONDITIONS, notes_example("06.knot_insertion").results["labels"][3]), visible=True),
         Case(EDGE, (SIX, ONE_TO_EIGHT, [3.75, 3.25, 3.5]), visible=True),  # unsorted, inside one span
         Case(EDGE, (SIX, ONE_TO_EIGHT, [3.5, 4.0, 4.5]), visible=True),  # over a shared simple knot
         Case(EDGE, (SIX, ONE_TO_EIGHT, [1.0, 2.0, 2.5]), visible=True),  # before the domain: the first segment
@@ -272,9 +282,11 @@ def greville_cases(rng):
 
 # --- 06.split_interval ------------------------------------------------------------------------------
 
-FIGURE_6_11 = [(0.0, 0.0), (1.0, 2.0), (3.0, 3.0), (5.0, 2.5), (7.0, 0.5), (8.0, -1.0)]
-FIGURE_6_11_INTERVALS = [1.0, 1.0, 1.0, 2.0, 3.0, 1.0, 1.0]
-PENTAGON = [(0.0, 2.0), (2.0, 0.5), (1.5, -2.0), (-1.5, -2.0), (-2.0, 0.5)]
+FIGURE_6_11 = [(0.0, 0.0), (1.0, 2.0), (3.0, 3.0), (5.0, 2.5), (7.0, 0.5), (8.0, -1.0)]  # our points
+FIGURE_6_11_INTERVALS = notes_example("06.figure_6_11").results["intervals"]
+PENTAGON = [(0.0, 2.0), (2.0, 0.5), (1.5, -2.0), (-1.5, -2.0), (-2.0, 0.5)]  # our points
+CLOSED_INTERVALS = notes_example("06.closed_intervals").inputs  # Figures 6.12 and 6.13
+SPLITTING = notes_example("06.interval_splitting")  # Figures 6.15-6.17: split the interval 3 of 3, 1, 2, 2, 1
 
 
 def _closed(rng):
@@ -285,9 +297,12 @@ def _closed(rng):
 
 def split_interval_cases(rng):
     cases = [
-        # Figure 6.11: split the interval 3 (between P3 and P4) into 1 and 2.
-        Case(NOTES, (FIGURE_6_11, FIGURE_6_11_INTERVALS, 4, 1 / 3), visible=True),
-        Case(NOTES, (FIGURE_6_11, FIGURE_6_11_INTERVALS, 4, 0.5), visible=True),
+        # Figure 6.11: split the interval 3 (between P3 and P4) into 1 and 2, and into halves.
+        Case(NOTES, (FIGURE_6_11, FIGURE_6_11_INTERVALS, 4, SPLITTING.inputs["one_and_two"]), visible=True),
+        Case(NOTES, (FIGURE_6_11, FIGURE_6_11_INTERVALS, 4, SPLITTING.inputs["halves"]), visible=True),
+        # Figures 6.15-6.17: the same splits of the interval 3 of a closed cubic.
+        Case(NOTES, (PENTAGON, *SPLITTING.args("intervals", "index", "one_and_two")), {"degree": 3}, visible=True),
+        Case(NOTES, (PENTAGON, *SPLITTING.args("intervals", "index", "halves")), {"degree": 3}, visible=True),
         Case(EDGE, (FIGURE_6_11, FIGURE_6_11_INTERVALS, 2, 0.25), visible=True),  # the first splittable interval
         Case(EDGE, (FIGURE_6_11, FIGURE_6_11_INTERVALS, 3, 0.75), visible=True),
         Case(EDGE, (FIGURE_6_11, FIGURE_6_11_INTERVALS, 4, 0.9), visible=True),  # the last splittable interval
@@ -296,10 +311,11 @@ def split_interval_cases(rng):
         Case(EDGE, (POLYLINE, [1.0, 2.0, 1.0], 1, 0.5), visible=True),  # degree 1: a new vertex on an edge
         Case(EDGE, (SIX[:5], [1.0, 2.0, 1.0, 3.0, 1.0], 2, 0.4), visible=True),  # quadratic
         Case(EDGE, (SPACE, [0.5, 1.5, 0.5, 1.5, 3.0], 2, 0.5), visible=True),
-        Case(CLOSED, (PENTAGON, [2.0, 3.0, 2.0, 1.0, 1.0], 1, 1 / 3), {"degree": 3}, visible=True),
-        Case(CLOSED, (PENTAGON, [2.0, 3.0, 2.0, 1.0, 1.0], 0, 0.5), {"degree": 3}, visible=True),
-        Case(CLOSED, (PENTAGON, [2.0, 3.0, 2.0, 1.0, 1.0], 4, 0.5), {"degree": 3}, visible=True),  # wraps around
-        Case(CLOSED, (PENTAGON, [1.0, 1.0, 1.0, 1.0, 1.0], 2, 0.5), {"degree": 2}, visible=True),
+        Case(CLOSED, (PENTAGON, CLOSED_INTERVALS["longer"], 1, 1 / 3), {"degree": 3}, visible=True),
+        Case(CLOSED, (PENTAGON, CLOSED_INTERVALS["longer"], 0, 0.5), {"degree": 3}, visible=True),
+        Case(CLOSED, (PENTAGON, CLOSED_INTERVALS["longer"], 4, 0.5), {"degree": 3}, visible=True),  # wraps around
+        Case(CLOSED, (PENTAGON, CLOSED_INTERVALS["uniform"], 2, 0.5), {"degree": 2}, visible=True),
+        Case(CLOSED, (PENTAGON, CLOSED_INTERVALS["double_knot"], 1, 0.5), {"degree": 3}, visible=True),
         Case(CLOSED, (PENTAGON, [1.0, 2.0, 1.0, 2.0, 1.0], 3, 0.25), {"degree": 1}, visible=True),
     ]
     for _ in range(8):
@@ -317,8 +333,9 @@ def split_interval_cases(rng):
         Case(BAD, (FIGURE_6_11, FIGURE_6_11_INTERVALS, 7, 0.5)),  # no such interval
         Case(BAD, (FIGURE_6_11, FIGURE_6_11_INTERVALS, 4, 1.5)),
         Case(BAD, (FIGURE_6_11, [1.0, 1.0, -1.0, 2.0, 3.0, 1.0, 1.0], 4, 0.5)),
-        Case(BAD, (PENTAGON, [2.0, 3.0, 2.0, 1.0], 1, 0.5), {"degree": 3}),  # closed: one interval per point
-        Case(BAD, (PENTAGON, [2.0, 3.0, 2.0, 1.0, 1.0], 5, 0.5), {"degree": 3}),
+        Case(BAD, (PENTAGON, CLOSED_INTERVALS["longer"][:4], 1, 0.5), {"degree": 3}),  # closed: one per point
+        Case(BAD, (PENTAGON, CLOSED_INTERVALS["longer"], 5, 0.5), {"degree": 3}),
+        Case(BAD, (PENTAGON, CLOSED_INTERVALS["triple_knot"], 0, 0.0), {"degree": 3}),  # a fourfold knot
     ]
     return cases
 

@@ -20,7 +20,8 @@ FLAT = np.array([[0.0, 0.0], [1.5, 0.0], [3.0, 0.0], [4.0, 3.0]])  # three point
 
 def test_the_chapter_module_exports_its_factories():
     assert set(ch05.__all__) == {
-        "blending_forms_explorer", "variation_diminishing_explorer", "BlendingFormsExplorer", "VariationDiminishingExplorer",
+        "blending_forms_explorer", "variation_diminishing_explorer",
+        "BlendingFormsExplorer", "VariationDiminishingExplorer",
     }
     assert all(getattr(widgets, name) is getattr(ch05, name) for name in ch05.__all__)
 

@@ -1,4 +1,4 @@
-"""cagd_course.widgets, chapter 6: the B-spline explorers driven through `update` and their sliders, without a browser."""
+"""cagd_course.widgets, chapter 6: the B-spline explorers driven through `update` and their sliders, no browser."""
 
 import matplotlib
 
