@@ -1,0 +1,323 @@
+"""Explorers of chapter 8 of the notes (offset curves): offsets and their cusps, the PH cubic's exact offset, gouging.
+
+The offset explorer is Figures 8.1 and 8.2 with a radius slider: the offset,
+its backward-running arc between the cusps, the circle of the tightest bend on
+the offset's side, and the graph of 1 + ρκ(t) whose zeros are the cusps. The PH
+lab builds a Pythagorean-hodograph cubic from u and v and lays its exact
+rational offset over the sampled Q + ρN. The gouging explorer runs a cutting
+tool of radius |ρ| along the offset and shows where it cuts into the curve.
+"""
+
+from __future__ import annotations
+
+import ipywidgets as widgets
+import numpy as np
+from matplotlib.patches import Circle
+
+from cagd_ref import bezier, offsets
+from cagd_ref.polynomials import bernstein_horner
+
+from ..plotting.curves import bezier_samples, plot_bezier, plot_control_polygon
+from ..plotting.offsets import draw_cusp_condition, draw_offset, offset_samples, plot_osculating_circle
+from ._base import Explorer, _control_points, _fmt, _slider
+from .ch06 import _TwoPanels
+
+__all__ = [
+    "offset_explorer",
+    "ph_offset_explorer",
+    "gouging_explorer",
+    "OffsetExplorer",
+    "PHOffsetExplorer",
+    "GougingExplorer",
+]
+
+# The chapter's curves: the convex arch (tightest bend 27/16 at t = 1/2, on its right), the S-curve with an
+# inflection at t = 1/2, a parabola y = x² (tightest bend 1/2 at its vertex, on its left) and a hook whose
+# end curls back towards its start (a tool inside it hits the other wall before any bend is too tight).
+CURVES = {
+    "convex arch": np.array([[0.0, 0.0], [1.0, 2.0], [3.0, 2.0], [4.0, 0.0]]),
+    "S-curve (inflection)": np.array([[0.0, 0.0], [1.0, 2.0], [2.0, -2.0], [3.0, 0.0]]),
+    "parabola y = x²": np.array([[-1.5, 2.25], [0.0, -2.25], [1.5, 2.25]]),
+    "hook": np.array([[0.0, 0.0], [6.0, 0.0], [4.0, 5.0], [1.0, 0.8]]),
+}
+YOUR_CURVE = "your curve"
+SAMPLES = 400
+RADIUS = {"min": -3.0, "max": 3.0, "step": 0.05, "readout_format": ".2f"}
+
+
+def _curve_choice(points, default: str) -> tuple[dict, widgets.Dropdown]:
+    """The curves an explorer offers (the chapter's, and first the one given) and the dropdown that picks one."""
+    if points is None:
+        return dict(CURVES), widgets.Dropdown(description="curve", options=list(CURVES), value=default)
+    curves = {YOUR_CURVE: _control_points(points, CURVES[default]), **CURVES}
+    return curves, widgets.Dropdown(description="curve", options=list(curves), value=YOUR_CURVE)
+
+
+def _radius(value) -> str:
+    return ("-∞" if value < 0 else "∞") if np.isinf(value) else f"{value:.4g}"
+
+
+def _bare(ax) -> None:
+    ax.set(xticks=[], yticks=[], xlabel="", ylabel="")
+
+
+# ---------------------------------------------------------------- offsets and cusps
+
+
+class OffsetExplorer(_TwoPanels, Explorer):
+    """An offset with its cusps and backward arc, the tightest bend's circle, 1 + ρκ below. Notes §8, Figs. 8.1-8.2."""
+
+    def __init__(self, points=None, rho: float = 2.0):
+        self.curves, curve = _curve_choice(points, "convex arch")
+        super().__init__({"curve": curve, "rho": _slider(widgets.FloatSlider, "ρ", value=rho, **RADIUS)})
+
+    def compute(self, curve: str, rho: float) -> dict:
+        points = self.curves[curve]
+        ts, offset, factor = offset_samples(points, rho, samples=SAMPLES)
+        cusps = offsets.offset_cusps(points, rho)
+        low, high = offsets.cusp_free_interval(points)
+        # The bends towards the offset's side (ρκ < 0) limit it; the tightest has the radius that first makes a cusp.
+        limit = high if rho > 0 else -low if rho < 0 else np.inf
+        tightest = None
+        if np.isfinite(limit):
+            tightest = (float(offsets.offset_cusps(points, np.sign(rho) * limit)[0]), float(limit))
+        return {
+            "curve": curve,
+            "points": points,
+            "rho": rho,
+            "ts": ts,
+            "offset": offset,
+            "factor": factor,
+            "cusps": cusps,
+            "cusp_points": offsets.offset_point(points, cusps, rho) if cusps.size else np.zeros((0, 2)),
+            "interval": (low, high),
+            "tightest": tightest,
+            "backward": factor < 0,
+        }
+
+    def draw(self, ax, state: dict) -> None:
+        points, rho = state["points"], state["rho"]
+        plot_control_polygon(ax, points, labels=False, alpha=0.4)
+        plot_bezier(ax, points, color="black", linewidth=2.2, label="base curve Q")
+        draw_offset(ax, state["offset"], state["factor"], state["cusp_points"], legend=f"offset ρ = {rho:.2f}")
+        if state["tightest"] is not None:
+            plot_osculating_circle(ax, points, state["tightest"][0])
+            ax.plot([], [], ":", color="C2", label="tightest bend on this side")
+        count = len(state["cusps"])
+        ax.set_title(f"offset at ρ = {rho:.2f}: {count} cusp{'s' if count != 1 else ''}", fontsize=10)
+        ax.legend(fontsize=7, loc="upper right")
+        _bare(ax)
+        lower = self.lower_axes()
+        draw_cusp_condition(lower, state["ts"], state["factor"], state["cusps"])
+        lower.set_xticks([0, 0.5, 1])
+        lower.legend(fontsize=7, loc="upper center")
+
+    def describe(self, state: dict) -> str:
+        low, high = state["interval"]
+        lines = [f"no cusps for {_radius(low)} &lt; ρ &lt; {_radius(high)}"]
+        if state["tightest"] is not None:
+            t, radius = state["tightest"]
+            lines.append(f"tightest bend on the offset's side: radius {radius:.4g} at t = {t:.3f}")
+        if state["cusps"].size:
+            lines.append("cusps at t = " + ", ".join(f"{t:.4f}" for t in state["cusps"]))
+            lines.append(f"runs backwards on {state['backward'].mean():.0%} of [0, 1]")
+        return "<br>".join(lines)
+
+
+def offset_explorer(points=None, rho: float = 2.0) -> OffsetExplorer:
+    """Dropdown `curve` and slider `rho` (ρ from -3 to 3): an offset, its cusps and the cusp condition. Notes §8.
+
+    points: (n+1, 2), offered first as "your curve" (default: the chapter's
+    curves only). `update` returns {"curve", "points", "rho", "ts" (400,),
+    "offset" (400, 2), "factor" (1 + ρκ at ts), "cusps" (k,), "cusp_points"
+    (k, 2), "interval" (low, high) of cusp-free radii, "tightest" (t, radius)
+    of the offset side's tightest bend or None, "backward" (where 1 + ρκ < 0)}.
+    """
+    return OffsetExplorer(points, rho)
+
+
+# ---------------------------------------------------------------- PH curves
+
+
+class PHOffsetExplorer(_TwoPanels, Explorer):
+    """A PH cubic from u and v, its exact rational offset over the sampled one, and σ(t) = |Q'(t)| below. Notes §8."""
+
+    def __init__(self, u=(2.0, 1.0), v=(0.0, 1.0), rho: float = 0.25):
+        options = {"min": -2.0, "max": 2.0, "step": 0.05, "readout_format": ".2f"}
+        controls = {
+            "u0": _slider(widgets.FloatSlider, "u0", value=float(u[0]), **options),
+            "u1": _slider(widgets.FloatSlider, "u1", value=float(u[1]), **options),
+            "v0": _slider(widgets.FloatSlider, "v0", value=float(v[0]), **options),
+            "v1": _slider(widgets.FloatSlider, "v1", value=float(v[1]), **options),
+            "rho": _slider(widgets.FloatSlider, "ρ", value=rho, **options),
+        }
+        super().__init__(controls)
+
+    def compute(self, u0: float, u1: float, v0: float, v1: float, rho: float) -> dict:
+        cubic = offsets.ph_cubic((0.0, 0.0), (u0, u1), (v0, v1))
+        try:
+            points, weights = offsets.ph_offset(cubic, rho)
+        except ValueError as err:
+            raise ValueError(f"u0, u1, v0, v1: {err}") from None
+        ts = np.linspace(0.0, 1.0, 201)
+        exact = bezier.evaluate(points, ts, weights)
+        sampled = offsets.offset_point(cubic, ts, rho)
+        sigma = offsets.ph_speed(cubic)
+        speed = np.linalg.norm(bezier.derivative(cubic, ts), axis=1)
+        return {
+            "cubic": cubic,
+            "rho": rho,
+            "points": points,
+            "weights": weights,
+            "ts": ts,
+            "exact": exact,
+            "sampled": sampled,
+            "deviation": float(np.abs(exact - sampled).max()),
+            "sigma": sigma,
+            "speed": speed,
+            "speed_error": float(np.abs(bernstein_horner(sigma, ts) - speed).max()),
+        }
+
+    def draw(self, ax, state: dict) -> None:
+        cubic, points, weights = state["cubic"], state["points"], state["weights"]
+        plot_control_polygon(ax, cubic, labels=True)
+        plot_bezier(ax, cubic, color="black", linewidth=2.2, label="PH cubic Q")
+        plot_control_polygon(ax, points, labels=[f"{w:.3g}" for w in weights], color="C3", alpha=0.6,
+                             marker="s", markersize=4, legend="offset's control points (weights)")
+        ax.plot(*state["exact"].T, color="C3", linewidth=2, label="exact rational offset (degree 5)")
+        ax.plot(*state["sampled"][::8].T, "o", color="C0", markersize=3.5, label="Q + ρN, sampled")
+        ax.set_title(f"ρ = {state['rho']:.2f}: rational quintic vs Q + ρN, largest gap {state['deviation']:.1e}",
+                     fontsize=10)
+        ax.legend(fontsize=7, loc="lower right")
+        _bare(ax)
+        lower = self.lower_axes()
+        lower.plot(state["ts"], bernstein_horner(state["sigma"], state["ts"]), color="C2", label="σ(t) = u² + v²")
+        lower.plot(state["ts"][::10], state["speed"][::10], "o", color="black", markersize=3, label="|Q'(t)|")
+        lower.set_xlim(0, 1)
+        lower.set_ylim(bottom=0)
+        lower.set_xticks([0, 0.5, 1])
+        lower.set_xlabel("t")
+        lower.legend(fontsize=7, loc="lower left")
+
+    def describe(self, state: dict) -> str:
+        weights = ", ".join(f"{w:.4g}" for w in state["weights"])
+        sigma = ", ".join(f"{s:.4g}" for s in state["sigma"])
+        return (f"σ = ⟨{sigma}⟩ (Bernstein), |σ − |Q'|| ≤ {state['speed_error']:.1e}<br>"
+                f"offset weights ({weights})<br>exact vs sampled offset: {state['deviation']:.1e}")
+
+
+def ph_offset_explorer(u=(2.0, 1.0), v=(0.0, 1.0), rho: float = 0.25) -> PHOffsetExplorer:
+    """Sliders `u0`, `u1`, `v0`, `v1` (the linear u, v) and `rho`: a PH cubic and its exact offset. Notes §8.
+
+    `update` returns {"cubic" (4, 2), "rho", "points" (6, 2), "weights" (6,)
+    of the rational offset, "ts", "exact" and "sampled" (201, 2), "deviation"
+    (largest distance between them, ~1e-15), "sigma" (3,) Bernstein
+    coefficients of the speed, "speed" (201,) |Q'| sampled, "speed_error"}.
+    Settings where the cubic stops (u and v share a root) are refused.
+    """
+    return PHOffsetExplorer(u, v, rho)
+
+
+# ---------------------------------------------------------------- gouging
+
+
+def _gouge_depths(curve: np.ndarray, path: np.ndarray, radius: float) -> np.ndarray:
+    """How far each point of the curve lies inside the swept tool: radius - its distance to the tool's path."""
+    path = path[np.all(np.isfinite(path), axis=1)]
+    distance = np.linalg.norm(curve[:, None, :] - path[None, :, :], axis=2).min(axis=1)
+    return radius - distance
+
+
+class GougingExplorer(Explorer):
+    """A tool of radius |ρ| whose centre runs along the offset: where it cuts into the curve, and why. Notes §8."""
+
+    figsize = (6.5, 5.0)
+
+    def __init__(self, points=None, rho: float = 1.8, t: float = 0.45):
+        self.curves, curve = _curve_choice(points, "convex arch")
+        controls = {
+            "curve": curve,
+            "rho": _slider(widgets.FloatSlider, "ρ", value=rho, **RADIUS),
+            "t": _slider(widgets.FloatSlider, "tool at t", min=0.0, max=1.0, step=0.01, value=t,
+                         readout_format=".2f"),
+        }
+        super().__init__(controls)
+
+    def compute(self, curve: str, rho: float, t: float) -> dict:
+        points = self.curves[curve]
+        ts, path, factor = offset_samples(points, rho, samples=SAMPLES)
+        base = bezier_samples(points, samples=SAMPLES)
+        depth = _gouge_depths(base, path, abs(rho))
+        size = float(np.ptp(base, axis=0).max())
+        gouged = depth > 1e-9 * size
+        regular = np.abs(factor) > 1e-9
+        reverse = np.full_like(path, np.nan)
+        reverse[regular] = offsets.reverse_offset(points, ts[regular], rho)
+        # At a cusp the offset-back jumps from Q to Q + 2ρN: break its line there.
+        reverse[1:][np.sign(factor[1:]) != np.sign(factor[:-1])] = np.nan
+        cusps = offsets.offset_cusps(points, rho)
+        tool = offsets.offset_point(points, t, rho)
+        kind = "none" if not gouged.any() else ("local" if cusps.size else "global")
+        return {
+            "curve": curve,
+            "points": points,
+            "rho": rho,
+            "t": t,
+            "base": base,
+            "path": path,
+            "path_factor": factor,
+            "reverse": reverse,
+            "gouged": gouged,
+            "depth": float(max(depth.max(), 0.0)),
+            "cusps": cusps,
+            "tool": tool,
+            "contact": bezier.evaluate(points, t),
+            "cut": float(max(abs(rho) - np.linalg.norm(base - tool, axis=1).min(), 0.0)),
+            "factor": float(1 + rho * bezier.signed_curvature(points, t)),
+            "kind": kind,
+        }
+
+    def draw(self, ax, state: dict) -> None:
+        rho, base = state["rho"], state["base"]
+        ax.plot(*base.T, color="black", linewidth=2.2, label="curve to cut")
+        cut = np.where(state["gouged"][:, None], base, np.nan)
+        ax.plot(*cut.T, color="C1", linewidth=5, alpha=0.8, label="gouged")
+        draw_offset(ax, state["path"], state["path_factor"], legend="tool centre's path")
+        ax.plot(*state["reverse"].T, color="C2", linestyle=(0, (2, 2)), linewidth=1.3, label="path offset back by -ρ")
+        if rho != 0:
+            ax.add_patch(Circle(tuple(state["tool"]), abs(rho), color="C0", alpha=0.2))
+            ax.add_patch(Circle(tuple(state["tool"]), abs(rho), fill=False, color="C0", linewidth=1.2))
+        ax.plot(*np.array([state["tool"], state["contact"]]).T, "o-", color="C0", markersize=4, linewidth=1)
+        titles = {"none": "no gouging", "local": "gouging: the tool is larger than a bend",
+                  "global": "gouging: the tool reaches another part of the curve"}
+        ax.set_title(f"tool radius {abs(rho):.2f}: {titles[state['kind']]}", fontsize=10)
+        ax.legend(fontsize=7, loc="upper right")
+        ax.autoscale_view()
+        _bare(ax)
+
+    def describe(self, state: dict) -> str:
+        lines = [f"deepest gouge {state['depth']:.3g}"]
+        if state["kind"] == "local":
+            lines.append("cusps at t = " + ", ".join(f"{c:.3f}" for c in state["cusps"]) +
+                         ": between them the path runs backwards")
+        elif state["kind"] == "global":
+            lines.append("1 + ρκ > 0 everywhere, yet the tool cuts: the curve comes back within ρ of itself")
+        lines.append(f"at t = {state['t']:.2f}: 1 + ρκ = {state['factor']:.3f}, this position cuts {state['cut']:.3g} "
+                     f"deep; tool centre {_fmt(state['tool'])}")
+        return "<br>".join(lines)
+
+
+def gouging_explorer(points=None, rho: float = 1.8, t: float = 0.45) -> GougingExplorer:
+    """Dropdown `curve`, sliders `rho` (the tool's radius and side) and `t` (where the tool is). Notes §8.
+
+    The tool's centre follows the offset at ρ; a point of the curve is gouged
+    when some tool position covers it. `update` returns {"curve", "points",
+    "rho", "t", "base" and "path" (400, 2) samples of the curve and of the
+    tool's path, "reverse" (the path offset back by -ρ with its own normal: the
+    curve again, except on the backward arc), "gouged" (400,) bool, "depth"
+    (deepest gouge), "cusps", "tool" (2,) centre at t, "contact" Q(t), "cut"
+    (how deep the tool at t cuts), "factor" (1 + ρκ(t)), "kind" ("none",
+    "local": the tool exceeds a bend, "global": it reaches a distant part)}.
+    """
+    return GougingExplorer(points, rho, t)
+
