@@ -1,0 +1,14 @@
+"""Forgets the factor n(n-1) of the second hodograph: L = max |Δ²P_i|."""
+import numpy as np
+
+
+def bezier_segments_needed(points, tol):
+    P = np.array(points, dtype=float)
+    if P.ndim != 2 or len(P) == 0:
+        raise ValueError("points: expected shape (n+1, d)")
+    if not tol > 0:
+        raise ValueError("tol: expected a tolerance > 0")
+    if len(P) < 3:
+        return 1
+    L = np.abs(np.diff(P, n=2, axis=0)).max(axis=0)
+    return max(1, int(np.ceil(np.sqrt(np.linalg.norm(L) / (8 * tol)))))

@@ -1,0 +1,15 @@
+"""Takes the largest signed second difference instead of the largest absolute one."""
+import numpy as np
+
+
+def bezier_segments_needed(points, tol):
+    P = np.array(points, dtype=float)
+    if P.ndim != 2 or len(P) == 0:
+        raise ValueError("points: expected shape (n+1, d)")
+    if not tol > 0:
+        raise ValueError("tol: expected a tolerance > 0")
+    n = len(P) - 1
+    if n < 2:
+        return 1
+    L = n * (n - 1) * np.diff(P, n=2, axis=0).max(axis=0)
+    return max(1, int(np.ceil(np.sqrt(np.linalg.norm(L) / (8 * tol)))))

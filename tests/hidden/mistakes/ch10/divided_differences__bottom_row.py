@@ -1,0 +1,17 @@
+"""Returns the last entry of every column (the table's bottom row) instead of the first (its top diagonal)."""
+import numpy as np
+
+
+def divided_differences(ts, values):
+    ts = np.array(ts, dtype=float)
+    c = np.array(values, dtype=float)
+    if ts.ndim != 1 or len(ts) == 0 or len(np.unique(ts)) != len(ts):
+        raise ValueError("ts: expected distinct nodes")
+    if c.ndim not in (1, 2) or len(c) != len(ts):
+        raise ValueError("values: one per node")
+    columns = [c]
+    for k in range(1, len(ts)):
+        prev = columns[-1]
+        step = (ts[k:] - ts[:-k]).reshape((-1,) + (1,) * (c.ndim - 1))
+        columns.append((prev[1:] - prev[:-1]) / step)
+    return np.array([col[-1] for col in columns])
