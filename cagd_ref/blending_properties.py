@@ -14,8 +14,9 @@ from typing import NamedTuple
 
 import numpy as np
 
-from ._validation import as_count, as_float_array, as_interval, as_points, as_scalar, as_vector
+from ._validation import as_count, as_float_array, as_interval, as_points, as_scalar
 from .blending import FORMS, POWER_COEFFICIENTS, Basis, basis_values
+from .geometry import normalize_line
 
 __all__ = [
     "Verdict",
@@ -70,15 +71,6 @@ def _sign_changes(values: np.ndarray, tol: float) -> np.ndarray:
     return np.sum(filled[..., 1:] * filled[..., :-1] < 0, axis=-1)
 
 
-def _unit_line(line) -> np.ndarray:
-    """A homogeneous line (a, b, c) scaled so that (a, b) is a unit normal."""
-    abc = as_vector(line, "line", dim=3)
-    length = np.hypot(abc[0], abc[1])
-    if length == 0:
-        raise ValueError(f"line: (a, b) must not both be zero in a x + b y + c = 0, got {abc.tolist()}")
-    return abc / length
-
-
 def line_crossings(polyline, line) -> np.ndarray:
     """Points (m, 2) where a planar polyline (k, 2) crosses the line a x + b y + c = 0, in order. Notes §5, property 4.
 
@@ -89,7 +81,7 @@ def line_crossings(polyline, line) -> np.ndarray:
     pts = as_points(polyline, "polyline")
     if pts.shape[1] != 2:
         raise ValueError(f"polyline: expected planar points of shape (k, 2), got shape {pts.shape}")
-    a, b, c = _unit_line(line)
+    a, b, c = normalize_line(line)
     distance = pts @ np.array([a, b]) + c
     tol = 1e-12 * max(1.0, float(np.abs(pts).max()), abs(c))
     filled, last = _filled_signs(distance, tol)
