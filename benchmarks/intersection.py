@@ -1,0 +1,83 @@
+"""Intersections of 100 seeded random pairs of Bézier curves: Bézier clipping against the `bezier` package.
+
+`cagd_ref.intersection.intersect_curves` is the course's Bézier-clipping
+intersector (notes §7.7), written in NumPy to be read; the `bezier` package
+(D. Hermes) intersects with compiled Fortran (bounding-box subdivision, then
+Newton's method). Each case times one pass over all 100 pairs of a degree, the
+same pairs for both, the peer's `Curve` objects built outside the clock. The
+agreement is checked pair by pair: the same number of intersections, and the
+largest difference of a parameter t or u (the peer may report an intersection
+twice; repeats closer than 1e-7 are dropped before comparing).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from cagd_ref.intersection import intersect_curves
+
+from . import peers
+from .common import Case, Plan, compare, progress, record
+from .evaluation import _summary
+
+CLIPPING = "cagd_ref intersect_curves"
+BEZIER_INTERSECT = "bezier Curve.intersect"
+PAIRS = 100
+DEGREES = (3, 5)
+SEED = 7_2017
+
+
+def random_pairs(degree: int, count: int = PAIRS, seed: int = SEED) -> list[tuple[np.ndarray, np.ndarray]]:
+    """`count` pairs of planar Bézier curves of one degree, control points uniform in [-1, 1]²."""
+    rng = np.random.default_rng([seed, degree])
+    return [(rng.uniform(-1, 1, (degree + 1, 2)), rng.uniform(-1, 1, (degree + 1, 2))) for _ in range(count)]
+
+
+def _sorted_unique(found: np.ndarray) -> np.ndarray:
+    """(k, 2) parameters sorted by t, then u, with repeats closer than 1e-7 dropped."""
+    if not len(found):
+        return np.zeros((0, 2))
+    found = found[np.lexsort((found[:, 1], found[:, 0]))]
+    keep = np.concatenate([[True], np.abs(np.diff(found, axis=0)).max(axis=1) > 1e-7])
+    return found[keep]
+
+
+def agreement(ours: list[np.ndarray], theirs: list[np.ndarray]) -> tuple[int, float]:
+    """(pairs whose intersection counts differ, largest parameter difference over the pairs that agree)."""
+    mismatched, worst = 0, 0.0
+    for a, b in zip(ours, theirs):
+        b = _sorted_unique(np.asarray(b, dtype=float))
+        if a.shape != b.shape:
+            mismatched += 1
+        elif len(a):
+            worst = max(worst, float(np.abs(a - b).max()))
+    return mismatched, worst
+
+
+def intersection_cases(plan: Plan) -> list[Case]:
+    cases = []
+    for degree in DEGREES:
+        pairs = random_pairs(degree)
+        candidates = {CLIPPING: lambda: [intersect_curves(p, q) for p, q in pairs]}
+        if peers.available("bezier"):
+            import bezier
+
+            curves = [tuple(bezier.Curve(np.asfortranarray(c.T), degree=degree, copy=True) for c in pair)
+                      for pair in pairs]
+            candidates[BEZIER_INTERSECT] = lambda: [a.intersect(b).T for a, b in curves]
+        timings = compare(candidates, plan)
+        case = Case("intersection", {"degree": degree, "pairs": PAIRS})
+        ours = timings[CLIPPING].output
+        record(case, CLIPPING, timings[CLIPPING])
+        case.extra["intersections"] = sum(len(found) for found in ours)
+        if BEZIER_INTERSECT in timings:
+            mismatched, worst = agreement(ours, timings[BEZIER_INTERSECT].output)
+            entry = record(case, BEZIER_INTERSECT, timings[BEZIER_INTERSECT], timings[CLIPPING].seconds, worst)
+            entry.note = f"{mismatched} pair(s) with a different count" if mismatched else ""
+            case.extra["mismatched pairs"] = mismatched
+        else:
+            record(case, BEZIER_INTERSECT, None, note="bezier not installed")
+        progress(f"[intersection] degree {degree}, {PAIRS} pairs, {case.extra['intersections']} intersections: "
+                 f"{_summary(case)}")
+        cases.append(case)
+    return cases
