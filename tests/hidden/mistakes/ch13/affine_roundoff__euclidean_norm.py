@@ -1,0 +1,15 @@
+"""Uses the Euclidean lengths of the vectors, one number for all coordinates."""
+import numpy as np
+
+
+def affine_roundoff(p0, p1, t, eta):
+    a, b = np.asarray(p0, dtype=float), np.asarray(p1, dtype=float)
+    ts = np.asarray(t, dtype=float)
+    if a.shape != b.shape or a.ndim > 1 or ts.ndim > 1:
+        raise ValueError("p0 and p1 must have one shape, t a number or 1-D")
+    if not (np.all(np.isfinite(a)) and np.all(np.isfinite(b)) and np.all(np.isfinite(ts))) or eta < 0:
+        raise ValueError("finite numbers and eta >= 0 please")
+    tt = ts.reshape(ts.shape + (1,) * a.ndim)
+    result = (1 - tt) * a + tt * b
+    norm = lambda v: np.linalg.norm(v, axis=-1, keepdims=True) if v.ndim else np.abs(v)
+    return eta * (np.abs(1 - tt) * norm(a) + np.abs(tt) * norm(b) + norm(result)) + 0 * result

@@ -1,0 +1,17 @@
+"""Gives f_1 the weight 1 instead of 1/2 (f = sum f_i 2^-(i-1))."""
+from fractions import Fraction
+
+
+def decode_float(bits):
+    if not isinstance(bits, str):
+        raise TypeError("bits must be a string")
+    parts = bits.split("|")
+    if len(parts) != 3 or len(parts[0]) != 1 or len(parts[1]) < 2 or not parts[2]:
+        raise ValueError("bits: expected s|exponent|fraction")
+    if any(set(p) - set("01") for p in parts):
+        raise ValueError("bits: only 0 and 1")
+    sign, exponent, fraction = parts
+    e = int(exponent[1:], 2) * (-1 if exponent[0] == "1" else 1)
+    f = sum(Fraction(int(bit), 2 ** i) for i, bit in enumerate(fraction))
+    value = f * Fraction(2) ** e
+    return float(-value if sign == "1" else value)
