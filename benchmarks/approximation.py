@@ -21,6 +21,12 @@ from cagd_ref.bspline import bezier_end_knots, to_scipy
 
 from .common import Case, Plan, compare, max_difference, progress, record
 from .evaluation import SEED, _summary
+from .targets import Verdict
+
+TITLE = "Least-squares B-spline fitting"
+ABOUT = ("Noisy planar samples at sorted random parameters, fitted by a cubic B-spline with uniform interior knots "
+         "and Bézier end conditions: `least_squares_fit` (banded normal equations) against SciPy's "
+         "`make_lsq_spline` with the knots converted, coefficients compared.")
 
 FIT = "cagd_ref least_squares_fit"
 SCIPY_FIT = "SciPy make_lsq_spline"
@@ -82,3 +88,17 @@ def worst_case(cases: list[Case]) -> tuple[Case, float, float] | None:
     case, ratio = max(measured, key=lambda item: item[1])
     difference = max(c.get(SCIPY_FIT).difference for c, _ in measured)
     return case, ratio, difference
+
+
+cases = fit_cases
+
+
+def verdicts(found: list[Case]) -> list[Verdict]:
+    target = f"`least_squares_fit` within {TIME_FACTOR}× of SciPy's `make_lsq_spline`, agreeing to {AGREEMENT:g}"
+    worst = worst_case(found)
+    if worst is None:
+        return [Verdict(target, "—", None)]
+    case, ratio, difference = worst
+    detail = f"worst case {case.params}"
+    return [Verdict(target, f"{ratio:.2f}× at worst, difference {difference:.1e}",
+                    ratio <= TIME_FACTOR and difference <= AGREEMENT, detail)]

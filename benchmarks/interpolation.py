@@ -22,6 +22,14 @@ from cagd_ref.interpolation import chebyshev_nodes, divided_differences, lagrang
 
 from .common import Case, Plan, compare, max_difference, progress, record
 from .evaluation import _summary
+from .targets import Verdict
+
+TITLE = "Polynomial interpolation"
+ABOUT = ("Planar data at the Chebyshev nodes of [0, 1], evaluated at evenly spaced parameters by the notes' "
+         "algorithms (`newton_eval`, `lagrange_eval`, `neville`) and by SciPy's `BarycentricInterpolator`; the "
+         "ratios are to `newton_eval`.")
+TIME_FACTOR = 2
+AGREEMENT = 1e-12
 
 NEWTON = "cagd_ref newton_eval"
 LAGRANGE = "cagd_ref lagrange_eval"
@@ -81,3 +89,22 @@ def slowest_against_scipy(cases: list[Case], method: str = NEWTON) -> tuple[Case
         return None
     case, ratio = max(measured, key=lambda item: item[1])
     return case, ratio, max(c.get(method).difference for c, _ in measured)
+
+
+cases = interpolation_cases
+
+
+def verdicts(found: list[Case]) -> list[Verdict]:
+    result = []
+    for method in (NEWTON, LAGRANGE):
+        target = f"`{method.split()[-1]}` within {TIME_FACTOR}× of SciPy's `BarycentricInterpolator`, agreeing to " \
+                 f"{AGREEMENT:g}"
+        worst = slowest_against_scipy(found, method)
+        if worst is None:
+            result.append(Verdict(target, "—", None))
+            continue
+        case, ratio, difference = worst
+        detail = f"worst case degree {case.params['degree']} at {case.params['values']} values"
+        result.append(Verdict(target, f"{ratio:.2f}× at worst, difference {difference:.1e}",
+                              ratio <= TIME_FACTOR and difference <= AGREEMENT, detail))
+    return result

@@ -19,6 +19,14 @@ from cagd_ref.intersection import intersect_curves
 from . import peers
 from .common import Case, Plan, compare, progress, record
 from .evaluation import _summary
+from .targets import Verdict
+
+TITLE = "Curve intersection"
+ABOUT = ("100 seeded random pairs of planar Bézier curves per degree, intersected by Bézier clipping "
+         "(`intersect_curves`, NumPy) and by the `bezier` package's compiled `Curve.intersect`; agreement pair by "
+         "pair (the same number of intersections, the largest parameter difference).")
+TIME_FACTOR = 3
+AGREEMENT = 1e-9
 
 CLIPPING = "cagd_ref intersect_curves"
 BEZIER_INTERSECT = "bezier Curve.intersect"
@@ -81,3 +89,21 @@ def intersection_cases(plan: Plan) -> list[Case]:
                  f"{_summary(case)}")
         cases.append(case)
     return cases
+
+
+cases = intersection_cases
+
+
+def verdicts(found: list[Case]) -> list[Verdict]:
+    target = (f"`intersect_curves` within {TIME_FACTOR}× of `bezier`'s `Curve.intersect` on {PAIRS} random cubic "
+              f"pairs, the same intersections to {AGREEMENT:g}")
+    case = next((c for c in found if c.params["degree"] == 3 and c.get(BEZIER_INTERSECT)
+                 and c.get(BEZIER_INTERSECT).seconds), None)
+    if case is None:
+        return [Verdict(target, "—", None, "bezier not installed" if found else "")]
+    ratio = case.get(CLIPPING).seconds / case.get(BEZIER_INTERSECT).seconds
+    agrees = case.extra.get("mismatched pairs", 0) == 0 and case.get(BEZIER_INTERSECT).difference <= AGREEMENT
+    detail = ("Bézier clipping in NumPy steps through Python per clip of every pair; the peer is compiled Fortran"
+              if ratio > TIME_FACTOR else "")
+    return [Verdict(target, f"{ratio:.1f}× the time, largest difference {case.get(BEZIER_INTERSECT).difference:.1e}",
+                    ratio <= TIME_FACTOR and agrees, detail)]

@@ -273,9 +273,12 @@ def markdown(results: dict, found: list[Verdict], context: dict) -> str:
             _roots,
         ),
     ]
-    for key, title, about, table in sections:
+    from .topics import TOPICS, table, topic
+
+    sections += [(key, topic(key).TITLE, topic(key).ABOUT, table) for key in TOPICS]
+    for key, title, about, render in sections:
         if results.get(key):
-            lines += ["", f"## {title}", "", about, ""] + table(results[key])
+            lines += ["", f"## {title}", "", about, ""] + render(results[key])
     health = _health(results)
     if health:
         lines += ["", "## Course health"] + health

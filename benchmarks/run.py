@@ -27,8 +27,9 @@ if __package__ in (None, ""):
 
 from benchmarks import peers  # noqa: E402
 from benchmarks.common import RESULTS, Plan, full_plan, progress, quick_plan  # noqa: E402
+from benchmarks.topics import TOPICS, topic  # noqa: E402
 
-SECTIONS = ("bezier", "bspline", "knots", "roots", "widgets", "grading", "chapters")
+SECTIONS = ("bezier", "bspline", "knots", "roots", *TOPICS, "widgets", "grading", "chapters")
 
 
 def _runner(section: str):
@@ -45,6 +46,8 @@ def _runner(section: str):
     if section == "roots":
         from benchmarks.rootfinding import root_cases
         return root_cases
+    if section in TOPICS:
+        return topic(section).cases
     from benchmarks import health
     return {"widgets": health.widget_timings, "grading": health.grading_timing, "chapters": health.chapter_timings}[
         section

@@ -114,15 +114,30 @@ def chapters_time(chapters) -> Verdict:
     return Verdict(target, f"slowest {worst.seconds:.1f} s", worst.seconds < CHAPTER_LIMIT and not failed, detail)
 
 
+def roots_speed(cases: list[Case]) -> Verdict:
+    target = ("`bernstein_roots` within 10× of `numpy.roots` at degree 20 (Wilkinson-type roots), "
+              "its errors at least 10^6 times smaller")
+    case = {c.params["degree"]: c for c in cases}.get(20)
+    if case is None:
+        return Verdict(target, "—", None, "this run has no degree 20" if cases else "")
+    time_ratio, error_ratio = case.extra["time ratio"], case.extra["error ratio"]
+    return Verdict(target, f"{time_ratio:.1f}× the time, errors {error_ratio:.1e}× smaller",
+                   time_ratio <= 10 and error_ratio >= 1e6)
+
+
 def verdicts(results: dict) -> list[Verdict]:
-    return [
+    from .topics import TOPICS, topic
+
+    found = [
         bspline_vs_scipy(results.get("bspline", [])),
         bspline_vs_geomdl(results.get("bspline", [])),
         bezier_vs_package(results.get("bezier", [])),
         roots_accuracy(results.get("roots", [])),
-        widgets_latency(results.get("widgets", [])),
-        chapters_time(results.get("chapters", [])),
+        roots_speed(results.get("roots", [])),
     ]
+    for section in TOPICS:
+        found += topic(section).verdicts(results.get(section, []))
+    return found + [widgets_latency(results.get("widgets", [])), chapters_time(results.get("chapters", []))]
 
 
 def verdict_line(found: list[Verdict]) -> str:
