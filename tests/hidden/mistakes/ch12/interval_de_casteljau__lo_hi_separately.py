@@ -1,0 +1,29 @@
+"""Runs de Casteljau on the lower and the upper ends separately: right on [0, 1], lo > hi outside."""
+from math import comb
+
+import numpy as np
+
+
+def _check(boxes, t):
+    B = np.array(boxes, dtype=float)
+    if B.ndim != 3 or B.shape[2] != 2 or len(B) == 0 or not np.all(np.isfinite(B)):
+        raise ValueError("boxes: expected finite (n+1, d, 2)")
+    if np.any(B[..., 0] > B[..., 1]):
+        raise ValueError("boxes: lo > hi")
+    ts = np.array(t, dtype=float)
+    if ts.ndim > 1 or not np.all(np.isfinite(ts)):
+        raise ValueError("t: expected a number or a 1-D array")
+    return B, np.atleast_1d(ts), ts.ndim == 0
+
+
+def _basis(n, ts):
+    k = np.arange(n + 1)
+    return np.array([comb(n, i) for i in k]) * (1 - ts[:, None]) ** (n - k) * ts[:, None] ** k
+
+
+def interval_de_casteljau(boxes, t):
+    B, ts, scalar = _check(boxes, t)
+    n = len(B) - 1
+    basis = _basis(n, ts)
+    result = np.stack([basis @ B[..., 0], basis @ B[..., 1]], axis=-1)
+    return result[0] if scalar else result
