@@ -24,6 +24,13 @@ from cagd_ref.interval_bezier import boxes_from_center, center_error, interval_d
 
 from .common import Case, Plan, compare, progress, record
 from .evaluation import _summary
+from .targets import Verdict
+
+TITLE = "Interval Bézier curves"
+ABOUT = ("Speed: `interval_de_casteljau` on boxes of a random planar curve at parameters spread over [-0.5, 1.5], "
+         "against `de_casteljau` on the centres alone. Quality: a degree-7 curve enclosed by quartic interval "
+         "pieces after 0 to 5 halvings; bound, true deviation, their ratio and the shrink per halving.")
+TIME_FACTOR = 5
 
 INTERVAL = "cagd_ref interval_de_casteljau"
 CENTRES = "cagd_ref de_casteljau (centres)"
@@ -95,3 +102,18 @@ if __name__ == "__main__":
     from .common import quick_plan
 
     interval_cases(quick_plan())
+
+
+cases = interval_cases
+
+
+def verdicts(found: list[Case]) -> list[Verdict]:
+    target = f"`interval_de_casteljau` within {TIME_FACTOR}× of `de_casteljau` on the centres at 10^6 values"
+    speed = [c for c in found if c.section == "interval evaluation"]
+    if not speed:
+        return [Verdict(target, "—", None)]
+    size = max(c.params["values"] for c in speed)
+    worst = max((c for c in speed if c.params["values"] == size), key=lambda c: c.extra["time ratio"])
+    detail = f"worst at degree {worst.params['degree']}" + ("" if size == 10**6 else f", judged at {size} values")
+    return [Verdict(target, f"{worst.extra['time ratio']:.2f}× at worst", worst.extra["time ratio"] <= TIME_FACTOR,
+                    detail)]

@@ -18,6 +18,7 @@ TOPICS = {
     "intersection": "benchmarks.intersection",
     "interpolation": "benchmarks.interpolation",
     "fitting": "benchmarks.approximation",
+    "interval": "benchmarks.interval_bezier",
 }
 
 
@@ -31,6 +32,15 @@ def _value(value) -> str:
 
 
 def table(cases: list[Case]) -> list[str]:
+    """One table per kind of case (`Case.section`), in the order they came."""
+    kinds = list(dict.fromkeys(case.section for case in cases))
+    lines = []
+    for kind in kinds:
+        lines += ([""] if lines else []) + _kind_table([case for case in cases if case.section == kind])
+    return lines
+
+
+def _kind_table(cases: list[Case]) -> list[str]:
     """One row per case: its parameters, every method's best time (×ratio to ours) and difference, its extras."""
     from .report import _cell, _table
 
