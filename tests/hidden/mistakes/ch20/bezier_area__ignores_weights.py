@@ -1,0 +1,60 @@
+"""Integrates the polynomial curve of the same control points, ignoring the weights."""
+from math import comb
+
+import numpy as np
+
+
+def _planar(points):
+    P = np.array(points, dtype=float)
+    if P.ndim != 2 or P.shape[1] != 2 or len(P) == 0:
+        raise ValueError("points must have shape (n+1, 2)")
+    return P
+
+
+def _matrix(n):
+    A = np.zeros((n + 1, n + 1))
+    for i in range(n + 1):
+        for j in range(n + 1):
+            for k, sign in ((j - 1, 1), (j, -1)):
+                if 0 <= k < n:
+                    A[i, j] += sign * comb(n, i) * comb(n - 1, k) / (comb(2 * n - 1, i + k) * 2)
+    return A
+
+
+def _product(f, g):
+    m, n = len(f) - 1, len(g) - 1
+    h = np.zeros(m + n + 1)
+    for i in range(m + 1):
+        for j in range(n + 1):
+            h[i + j] += comb(m, i) * comb(n, j) * f[i] * g[j]
+    return h / np.array([comb(m + n, k) for k in range(m + n + 1)])
+
+
+def _integral(*factors):
+    result = factors[0]
+    for f in factors[1:]:
+        result = _product(result, f)
+    return float(result.mean())
+
+
+def _hodograph(c):
+    return (len(c) - 1) * np.diff(c) if len(c) > 1 else np.zeros(1)
+
+
+def _checked(points, weights, tol):
+    P = _planar(points)
+    if weights is not None:
+        w = np.array(weights, dtype=float)
+        if w.shape != (len(P),) or np.any(w <= 0):
+            raise ValueError("weights must be positive, one per point")
+    else:
+        w = None
+    tol = float(tol)
+    if not tol > 0 or tol < 1e-13 * np.abs(P).max() ** 2:
+        raise ValueError("tol out of range")
+    return P, w
+
+
+def bezier_area(points, weights=None, tol=1e-9):
+    P, w = _checked(points, weights, tol)
+    return float(P[:, 1] @ _matrix(len(P) - 1) @ P[:, 0])
