@@ -1,0 +1,101 @@
+"""Figures of tensor-product Bézier patches in 3-D: the patch with its iso-curves, the control net, tangent planes.
+
+Every function draws into the 3-D Axes it is given (``projection="3d"``) and returns it. `finish_3d`
+gives a figure equal axes, a fixed view and few ticks, so that patches keep their shape and stay
+readable; where ipympl is installed the figure can be turned with the mouse.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.axes import Axes
+from matplotlib.ticker import MaxNLocator
+from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+
+from cagd_ref._validation import as_float_array, as_vector
+from cagd_ref.surfaces import patch_point
+
+from ._style import check_axes
+
+__all__ = ["patch_grid", "plot_patch", "plot_control_net", "plot_tangent_plane", "finish_3d"]
+
+NET_STYLE = {"color": "0.45", "linestyle": "--", "linewidth": 0.8, "marker": "o", "markersize": 3}
+
+
+def _three_d(ax) -> None:
+    check_axes(ax)
+    if ax.name != "3d":
+        raise TypeError("ax: expected 3-D axes (projection='3d')")
+
+
+def _net(points) -> np.ndarray:
+    net = as_float_array(points, "points")
+    if net.ndim != 3 or net.shape[2] != 3:
+        raise ValueError(f"points: expected a control net in space, shape (m+1, n+1, 3), got shape {net.shape}")
+    return net
+
+
+def patch_grid(points, weights=None, samples: int = 21) -> np.ndarray:
+    """Points of the patch on a regular samples × samples grid of (s, t), shape (samples, samples, d)."""
+    grid = np.linspace(0.0, 1.0, samples)
+    s, t = np.meshgrid(grid, grid, indexing="ij")
+    return patch_point(points, s.ravel(), t.ravel(), weights).reshape(samples, samples, -1)
+
+
+def plot_patch(ax, points, weights=None, samples: int = 13, iso: int = 5, color: str = "C0", alpha: float = 0.25,
+               label: str | None = None) -> Axes:
+    """The patch as a shaded surface with `iso` iso-curves in each direction (s = const and t = const). Notes §15.1."""
+    _three_d(ax)
+    net = _net(points)
+    grid = patch_grid(net, weights, samples)
+    ax.plot_surface(*np.moveaxis(grid, 2, 0), color=color, alpha=alpha, linewidth=0, shade=True)
+    fine = np.linspace(0.0, 1.0, 4 * samples)
+    for k, value in enumerate(np.linspace(0.0, 1.0, iso)):
+        for s, t in ((np.full_like(fine, value), fine), (fine, np.full_like(fine, value))):
+            ax.plot(*patch_point(net, s, t, weights).T, color=color, linewidth=0.8,
+                    label=label if k == 0 and s[0] == value else None)
+    return ax
+
+
+def plot_control_net(ax, points, **style) -> Axes:
+    """The control net: the rows (i fixed) and columns (j fixed) of control points joined by dashed lines."""
+    _three_d(ax)
+    net = _net(points)
+    label = style.pop("label", None)
+    style = {**NET_STYLE, **style}
+    for i in range(net.shape[0]):
+        ax.plot(*net[i].T, **style, label=label if i == 0 else None)
+    for j in range(net.shape[1]):
+        ax.plot(*net[:, j].T, **{**style, "marker": ""})
+    return ax
+
+
+def plot_tangent_plane(ax, point, p_s, p_t, size: float = 0.5, color: str = "C2", alpha: float = 0.3) -> Axes:
+    """A square of side 2·size in the plane through `point` spanned by p_s and p_t (the tangent plane)."""
+    _three_d(ax)
+    p = as_vector(point, "point", dim=3)
+    a = as_vector(p_s, "p_s", dim=3)
+    b = as_vector(p_t, "p_t", dim=3)
+    e1 = a / np.linalg.norm(a)
+    e2 = b - (b @ e1) * e1
+    e2 /= np.linalg.norm(e2)
+    corners = [p + size * (x * e1 + y * e2) for x, y in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+    ax.add_collection3d(Poly3DCollection([corners], facecolor=color, edgecolor=color, alpha=alpha))
+    return ax
+
+
+def finish_3d(ax, points, elev: float = 25.0, azim: float = -60.0, margin: float = 0.08) -> Axes:
+    """Equal axes around `points` (any array of 3-D points), a fixed view, three ticks per axis, axis labels."""
+    _three_d(ax)
+    pts = as_float_array(points, "points").reshape(-1, 3)
+    low, high = pts.min(axis=0), pts.max(axis=0)
+    centre, half = (low + high) / 2, (1 + margin) * max(float(np.max(high - low)) / 2, 1e-9)
+    ax.set(xlim=(centre[0] - half, centre[0] + half), ylim=(centre[1] - half, centre[1] + half),
+           zlim=(centre[2] - half, centre[2] + half))
+    ax.set_box_aspect((1, 1, 1))
+    ax.view_init(elev=elev, azim=azim)
+    for axis, name in ((ax.xaxis, "x"), (ax.yaxis, "y"), (ax.zaxis, "z")):
+        axis.set_major_locator(MaxNLocator(3))
+        axis.set_label_text(name)
+    ax.tick_params(labelsize=7, pad=0)
+    return ax

@@ -1,0 +1,13 @@
+"""Splits the Cartesian points and appends the weights, without forming w·P: (P_i, w_i) instead of w_i (P_i, 1)."""
+import numpy as np
+
+
+def split_qr(points, weights=None):
+    P = np.array(points, dtype=float)
+    if P.ndim != 2 or len(P) < 2:
+        raise ValueError("points: expected shape (n+1, d) with n >= 1")
+    w = np.ones(len(P)) if weights is None else np.array(weights, dtype=float)
+    if w.shape != (len(P),) or np.any(w == 0):
+        raise ValueError("weights: expected n+1 nonzero weights")
+    H = np.column_stack([P, w])
+    return H[:-1], H[1:]

@@ -1,0 +1,24 @@
+"""Keeps every sub-patch the size of the whole net, zeroing the row and column it should drop."""
+import numpy as np
+
+
+def _net(points, weights):
+    P = np.array(points, dtype=float)
+    if P.ndim != 3 or P.shape[0] < 2 or P.shape[1] < 2:
+        raise ValueError("points: expected shape (m+1, n+1, d) with m, n >= 1")
+    w = np.ones(P.shape[:2]) if weights is None else np.array(weights, dtype=float)
+    if w.shape != P.shape[:2] or np.any(w == 0):
+        raise ValueError("weights: expected (m+1, n+1) nonzero weights")
+    return P, w
+
+
+def sub_patches(points, weights=None):
+    P, w = _net(points, weights)
+    H = np.concatenate([P * w[..., None], w[..., None]], axis=2)
+    out = []
+    for k, l in ((0, 0), (1, 0), (0, 1), (1, 1)):
+        S = H.copy()
+        S[0 if k else -1] = 0
+        S[:, 0 if l else -1] = 0
+        out.append(S)
+    return tuple(out)
