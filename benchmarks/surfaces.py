@@ -30,6 +30,13 @@ from cagd_ref.surfaces import de_casteljau_point_tangents, patch_point, patch_po
 from . import peers
 from .common import Case, Plan, compare, max_difference, progress, record
 from .evaluation import _geomdl_subset, _summary
+from .targets import Verdict
+
+TITLE = "Surface patches"
+ABOUT = ("`patch_point` on a grid of a bicubic and of a degree-(5, 5) patch against SciPy's `NdBSpline` (the same "
+         "patch through the knot converters) and geomdl; `patch_point_tangents` (chapter 16's sub-patches) against "
+         "point and tangents by de Casteljau, the measured speed-up next to the ratio the operation count predicts.")
+SCIPY_FACTOR, GEOMDL_FACTOR = 3, 10
 
 OURS = "cagd_ref patch_point"
 SCIPY = "scipy NdBSpline"
@@ -136,3 +143,22 @@ def tangent_cases(plan: Plan) -> list[Case]:
 def surface_cases(plan: Plan) -> list[Case]:
     """Both sections of this benchmark, points then tangents."""
     return point_cases(plan) + tangent_cases(plan)
+
+
+cases = surface_cases
+
+
+def verdicts(found: list[Case]) -> list[Verdict]:
+    points = [c for c in found if c.section == "patch points"]
+    result = []
+    for peer, target, judge in (
+        (SCIPY, f"`patch_point` within {SCIPY_FACTOR}× of SciPy's `NdBSpline`", lambda r: r <= SCIPY_FACTOR),
+        (GEOMDL, f"`patch_point` at least {GEOMDL_FACTOR}× faster than geomdl", lambda r: 1 / r >= GEOMDL_FACTOR),
+    ):
+        ratios = [c.get(OURS).seconds / c.get(peer).seconds for c in points if c.get(peer) and c.get(peer).seconds]
+        if not ratios:
+            result.append(Verdict(target, "—", None))
+            continue
+        worst = max(ratios) if peer == SCIPY else min(ratios)
+        result.append(Verdict(target, f"{worst:.2f}× the peer's time at worst", judge(worst)))
+    return result
