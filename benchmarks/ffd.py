@@ -27,8 +27,15 @@ import numpy as np
 from cagd_ref.bezier import bernstein_matrix
 from cagd_ref.ffd import ffd, identity_lattice
 
-from .common import Case, Plan, compare, max_difference, progress, record
+from .common import Case, Plan, compare, format_seconds, max_difference, progress, record
 from .evaluation import _summary
+from .targets import Verdict
+
+TITLE = "Free-form deformation"
+ABOUT = ("`ffd` with a rational degree-(3, 3) lattice on random points in and around the box, against an einsum "
+         "tensor sum, SciPy's `NdBSpline` on the homogeneous lattice, and `ffd` called once per point (timed on "
+         "2000 points, scaled); and one update of the lattice editor deforming a word outline of about 10^5 points.")
+LOOP_FACTOR, EXPLORER_SECONDS = 10, 1.0
 
 FFD = "cagd_ref ffd"
 LOOP = "cagd_ref ffd, one point per call"
@@ -142,3 +149,26 @@ def explorer_case(plan: Plan) -> Case:
     record(case, EXPLORER, timing, timing.seconds, note=f"{outline} outline points, drawn and rendered")
     progress(f"[ffd] lattice editor, {outline}-point outline: one update in {timing.seconds * 1000:.0f} ms")
     return case
+
+
+cases = ffd_cases
+
+
+def verdicts(found: list[Case]) -> list[Verdict]:
+    result = []
+    target = f"`ffd` at 10^6 points at least {LOOP_FACTOR}× faster than one point per call"
+    speed = [c for c in found if c.section == "ffd"]
+    if speed:
+        case = max(speed, key=lambda c: c.params["points"])
+        speed_up = case.extra["speed-up over the loop"]
+        at = "" if case.params["points"] == 10**6 else f"judged at {case.params['points']} points"
+        result.append(Verdict(target, f"{speed_up:.0f}× faster", speed_up >= LOOP_FACTOR, at))
+    else:
+        result.append(Verdict(target, "—", None))
+    target = f"a deformed 10^5-point outline redrawn by the lattice editor in under {EXPLORER_SECONDS:g} s"
+    editor = next((c.get(EXPLORER) for c in found if c.get(EXPLORER)), None)
+    if editor is None or editor.seconds is None:
+        result.append(Verdict(target, "—", None))
+    else:
+        result.append(Verdict(target, format_seconds(editor.seconds), editor.seconds < EXPLORER_SECONDS))
+    return result

@@ -19,6 +19,7 @@ TOPICS = {
     "interpolation": "benchmarks.interpolation",
     "fitting": "benchmarks.approximation",
     "interval": "benchmarks.interval_bezier",
+    "ffd": "benchmarks.ffd",
     "surfaces": "benchmarks.surfaces",
     "hybrid": "benchmarks.hybrid",
 }
