@@ -21,6 +21,7 @@ TOPICS = {
     "interval": "benchmarks.interval_bezier",
     "ffd": "benchmarks.ffd",
     "surfaces": "benchmarks.surfaces",
+    "algebra": "benchmarks.algebra",
     "hybrid": "benchmarks.hybrid",
 }
 

@@ -21,10 +21,28 @@ Part I. Curves
 Part II. Intersections, offsets and roots
 
     intersection          7        intersections of lines and curves: Bézout, substitution, subdivision, Bézier clipping
-    offsets               8        offset curves, their cusps, Pythagorean-hodograph curves and their exact offsets
-    roots                 9        real roots of polynomials in Bernstein form: hull marching, deflation, clipping
+    offsets               8        offset curves and their cusps, PH curves and the parabola with exact rational offsets
+    roots                 9        real roots in Bernstein form: hull marching, deflation, derivatives, line ∩ curve
 
 Part III. Interpolation and approximation
 
-    interpolation         10       Lagrange, Newton and Neville interpolation, Chebyshev nodes, Hermite curves
+    interpolation         10       Lagrange, Newton, Neville; error bounds, Chebyshev nodes, flattening, Hermite curves
+    approximation         11       best constants, least-squares B-spline fits, parameters, fairing, constraints, boxes
+    interval_bezier       12       interval arithmetic and interval Bézier curves: containment, subdivision, enclosures
+    floating              13       floating-point numbers, rounding error and guaranteed bounds for de Casteljau
+
+Part IV. Deformations and surfaces
+
+    ffd                   14       free-form deformation: a tensor-product lattice bends whatever lies in its box
+    surfaces              16       tensor-product Bézier patches: points, tangents, normals; the O(n²) method
+
+Part V. Algebraic geometry
+
+    algebra               17       resultants, GCDs, implicitization, inversion and intersection of rational curves
+    moving_lines          18       moving lines and pencils: conics, double points, compact implicit equations, envelopes
+
+Part VI. Hybrid curves, integrals and maps of quadrilaterals
+
+    hybrid                20       hybrid curves (a polynomial curve with a moving point), integrals with error bounds
+    quad_maps             21       bilinear, birational and projective maps of quadrilaterals and their inverses
 """

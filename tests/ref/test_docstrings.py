@@ -12,6 +12,7 @@ import doctest
 import importlib
 import importlib.util
 import pkgutil
+import re
 from pathlib import Path
 
 import numpy as np
@@ -54,4 +55,4 @@ def test_graded_functions_show_an_example_and_their_section(function):
     assert function is not None, "no reference function of that name in the chapter's modules"
     text = function.__doc__ or ""
     assert ">>> " in text, "a runnable example with the notes' numbers"
-    assert "Notes §" in text, "the section of the notes it implements"
+    assert re.search(r"Notes (§\d|\(\d)", text), "the section (Notes §N.M) or equation (Notes (N.M)) it implements"
