@@ -25,7 +25,7 @@ EDGE = "edge cases"
 PARALLEL = "parallel lines"
 CURVES = "curves of the notes' figures"
 ENDS = "shared end points and split points"
-TANGENT = "tangencies and overlaps"
+TANGENT = "tangencies"
 RATIONAL = "rational curves"
 RANDOM = "random"
 BAD = "bad input"
@@ -309,8 +309,9 @@ def intersect_curves_cases(rng):
         Case(ENDS, ([(0.0, 0.0), (1.0, 1.0), (2.0, 0.0)], [(1.0, -1.0), (1.0, 1.0)]), visible=True),  # at t = u = 1/2
         Case(TANGENT, ([(0.0, 1.0), (0.5, -1.0), (1.0, 1.0)], [(0.0, 0.0), (1.0, 0.0)]), visible=True),
         Case(TANGENT, ([(-1.0, 1.0), (0.0, -1.0), (1.0, 1.0)], [(-1.0, 2.0), (0.0, -2.0), (1.0, 2.0)]), visible=True),
-        Case(TANGENT, (cubic, cubic), visible=True),  # the same curve twice: not isolated
-        Case(TANGENT, ([(0.0, 0.0), (2.0, 0.0)], [(1.0, 0.0), (3.0, 0.0)]), visible=True),  # collinear overlap
+        # Overlapping curves have no isolated intersections: refused (the statement says so), shown to students.
+        Case(BAD, (cubic, cubic), visible=True),  # the same curve twice
+        Case(BAD, ([(0.0, 0.0), (2.0, 0.0)], [(1.0, 0.0), (3.0, 0.0)]), visible=True),  # collinear overlap
         Case(RATIONAL, arc.args("p", "q"), {"p_weights": arc.inputs["p_weights"]}, visible=True),
         Case(RATIONAL, arc.args("q", "p"), {"q_weights": arc.inputs["p_weights"]}, visible=True),
         Case(RATIONAL, (arc.inputs["p"], [(0.0, 0.0), (1.5, 1.5)]),
