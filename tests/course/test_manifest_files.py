@@ -77,3 +77,10 @@ def test_lower_bounds_match_between_the_two_files():
     conda = dict(r.split(">=") for r in _conda_dependencies() if ">=" in r)
     conda.pop("python", None)
     assert pip_bounds == conda
+
+
+def test_the_readme_lists_every_chapter():
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    for chapter in COURSE.chapters:
+        assert f"| {chapter.number}. {chapter.title} |" in readme, f"README: add chapter {chapter.number}"
+        assert f"`{chapter.notebook.relative_to(ROOT)}`" in readme
