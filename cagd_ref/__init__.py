@@ -39,7 +39,7 @@ Part IV. Deformations and surfaces
 Part V. Algebraic geometry
 
     algebra               17       resultants, GCDs, implicitization, inversion and intersection of rational curves
-    moving_lines          18       moving lines and pencils: conics, double points, compact implicit equations, envelopes
+    moving_lines          18       moving lines and pencils: conics, double points, compact implicit equations
 
 Part VI. Hybrid curves, integrals and maps of quadrilaterals
 
