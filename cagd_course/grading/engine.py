@@ -8,8 +8,12 @@ against them with the exercise's comparison.
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import importlib.util
+import inspect
+import json
+from collections import OrderedDict
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -17,7 +21,7 @@ import numpy as np
 
 from ..manifest import Course, load_course
 from .runner import Limits, RunResult, Task, run_tasks
-from .suite import Case, Exercise, Raises, expected_value
+from .suite import Case, Exercise, Mismatch, Raises, expected_value
 from .worker import Unsupported, decode, encode
 
 __all__ = [
@@ -76,9 +80,28 @@ class Prepared:
     cases: list[Case]
     expected: list
     encoded: list[dict]
+    sent: list[str] = field(default_factory=list)  # the encoded cases as JSON text, as the worker gets them
 
     def task(self) -> Task:
-        return Task(self.exercise.id, self.exercise.function, self.encoded)
+        text = "[" + ",".join(self.sent) + "]" if self.sent else ""
+        return Task(self.exercise.id, self.exercise.function, self.encoded, text)
+
+
+# The reference's answers by exercise and input as sent: the fixed cases (the notes' examples, edge
+# cases, bad input) recur in every submission, and a class would otherwise recompute them each time.
+_ANSWERS: OrderedDict = OrderedDict()
+ANSWERS_KEPT = 50_000
+
+
+def _answer(exercise: Exercise, case: Case, sent: str):
+    key = (exercise.id, exercise.reference, sent)
+    if key in _ANSWERS:
+        _ANSWERS.move_to_end(key)
+        return _ANSWERS[key]
+    value = _ANSWERS[key] = expected_value(exercise, case)
+    if len(_ANSWERS) > ANSWERS_KEPT:
+        _ANSWERS.popitem(last=False)
+    return value
 
 
 def prepare(exercises: dict[str, tuple[Exercise, float]], seed: int) -> list[Prepared]:
@@ -88,14 +111,17 @@ def prepare(exercises: dict[str, tuple[Exercise, float]], seed: int) -> list[Pre
         # Each exercise gets its own stream so adding cases to one does not reshuffle another.
         rng = np.random.default_rng([seed, int(hashlib.sha256(exercise_id.encode()).hexdigest()[:8], 16)])
         cases = exercise.cases(rng)
-        expected = [expected_value(exercise, case) for case in cases]
         encoded = [{"args": encode(list(case.args)), "kwargs": encode(dict(case.kwargs))} for case in cases]
-        prepared.append(Prepared(exercise, points, cases, expected, encoded))
+        sent = [json.dumps(e) for e in encoded]
+        expected = [_answer(exercise, case, text) for case, text in zip(cases, sent)]
+        prepared.append(Prepared(exercise, points, cases, expected, encoded, sent))
     return prepared
 
 
 @dataclass
 class CaseResult:
+    """One case's verdict; `kind` names the failure (see `suite.Mismatch`), `rule` the statement's rule it tests."""
+
     category: str
     visible: bool
     passed: bool
@@ -103,6 +129,8 @@ class CaseResult:
     case: Case | None = None
     expected: object = None
     received: object = None
+    kind: str = ""
+    rule: str = ""
 
 
 @dataclass
@@ -114,6 +142,8 @@ class ExerciseResult:
     stopped: str = ""
     hint: str = ""
     seconds: float = 0.0
+    # The comparison's (rtol, atol), quoted when a value misses it narrowly.
+    tolerance: tuple[float, float] | None = None
 
     def categories(self) -> dict[str, list[CaseResult]]:
         grouped: dict[str, list[CaseResult]] = {}
@@ -133,11 +163,24 @@ def _received(event: dict):
     return decode(event.get("value"))
 
 
-def _mutation(case: Case, event: dict) -> str:
-    """A message if the student's function changed one of its inputs in place."""
+@functools.lru_cache(maxsize=256)
+def _parameter_names(function) -> tuple[str, ...]:
+    """The positional parameters of the exercise's reference: the names the statement gives them."""
+    try:
+        parameters = inspect.signature(function).parameters.values()
+    except (TypeError, ValueError):
+        return ()
+    return tuple(p.name for p in parameters if p.kind in (p.POSITIONAL_ONLY, p.POSITIONAL_OR_KEYWORD))
+
+
+def _mutation(exercise: Exercise, case: Case, sent: list, event: dict) -> str:
+    """A message if the student's function changed one of its inputs in place (`sent`: the inputs as encoded)."""
+    if "args_after" not in event or event["args_after"] == sent:
+        return ""  # the worker leaves the inputs out when they came back as they were sent
     after = decode(event.get("args_after"))
     if not isinstance(after, list) or len(after) != len(case.args):
         return ""
+    names = _parameter_names(exercise.reference)
     for position, (before, now) in enumerate(zip(case.args, after)):
         if isinstance(before, (np.ndarray, list)) and not isinstance(now, Unsupported):
             try:
@@ -145,26 +188,34 @@ def _mutation(case: Case, event: dict) -> str:
             except (TypeError, ValueError):
                 same = False
             if not same:
-                return (
-                    f"the function modified its input argument {position + 1} in place "
-                    "(inputs must be left unchanged)"
+                name = f"`{names[position]}`" if position < len(names) else f"number {position + 1}"
+                return Mismatch(
+                    f"the function changed its argument {name} in place (inputs must be left unchanged)", "mutation"
                 )
     return ""
 
 
-def _judge(prepared: Prepared, index: int, event: dict | None, stopped: str) -> CaseResult:
+def _judge(prepared: Prepared, index: int, event: dict | None, stopped: str, compare) -> CaseResult:
     case = prepared.cases[index]
     expected = prepared.expected[index]
-    base = dict(category=case.category, visible=case.visible, case=case, expected=expected)
+    rule = prepared.exercise.rule_for(case)
+    base = dict(category=case.category, visible=case.visible, case=case, expected=expected, rule=rule)
     if event is None:
-        return CaseResult(passed=False, message=stopped or "not run", **base)
+        return CaseResult(passed=False, message=stopped or "not run", kind="stopped", **base)
     if "missing" in event:
-        return CaseResult(passed=False, message=str(event["missing"]), **base)
+        return CaseResult(passed=False, message=str(event["missing"]), kind="missing", **base)
     received = _received(event)
-    problem = prepared.exercise.comparison()(expected, received)
+    problem = compare(expected, received)
     if problem is None:
-        problem = _mutation(case, event)
-    return CaseResult(passed=not problem, message=problem or "", received=received, **base)
+        problem = _mutation(prepared.exercise, case, prepared.encoded[index]["args"], event)
+    kind = getattr(problem, "kind", "value") if problem else ""
+    return CaseResult(passed=not problem, message=str(problem or ""), received=received, kind=kind, **base)
+
+
+def _tolerance(exercise: Exercise) -> tuple[float, float] | None:
+    compare = exercise.comparison()
+    rtol, atol = getattr(compare, "rtol", None), getattr(compare, "atol", None)
+    return (float(rtol), float(atol)) if rtol is not None and atol is not None else None
 
 
 def score(cases: list[CaseResult], points: float) -> float:
@@ -196,16 +247,25 @@ class GradeRun:
 
 
 def grade_statements(
-    statements: list[dict], prepared: list[Prepared], limits: Limits = Limits(), allow_reference: bool = False
+    statements: list[dict],
+    prepared: list[Prepared],
+    limits: Limits = Limits(),
+    allow_reference: bool = False,
+    require_confinement: bool = False,
 ) -> GradeRun:
-    """Run the submission's statements in a worker on every prepared exercise and score the answers."""
-    run = run_tasks(statements, [p.task() for p in prepared], limits, allow_reference)
+    """Run the submission's statements in a worker on every prepared exercise and score the answers.
+
+    With `require_confinement` nothing runs where graded code cannot be confined (every exercise
+    scores 0, "not graded").
+    """
+    run = run_tasks(statements, [p.task() for p in prepared], limits, allow_reference, require_confinement)
     results = []
     for item in prepared:
         events = run.events.get(item.exercise.id, [])
         stopped = run.stopped.get(item.exercise.id, "")
+        compare = item.exercise.comparison()
         cases = [
-            _judge(item, index, events[index] if index < len(events) else None, stopped)
+            _judge(item, index, events[index] if index < len(events) else None, stopped, compare)
             for index in range(len(item.cases))
         ]
         results.append(
@@ -217,6 +277,7 @@ def grade_statements(
                 stopped=stopped,
                 hint=item.exercise.hint,
                 seconds=float(run.seconds.get(item.exercise.id, 0.0)),
+                tolerance=_tolerance(item.exercise),
             )
         )
     return GradeRun(results, run)

@@ -9,7 +9,7 @@ import numpy as np
 from .engine import CaseResult, ExerciseResult
 from .suite import Raises
 
-__all__ = ["exercise_summary", "check_text", "feedback_html", "gradescope_results", "status_of"]
+__all__ = ["exercise_summary", "check_text", "failure_hint", "feedback_html", "gradescope_results", "status_of"]
 
 
 def _format_value(value, limit: int = 400) -> str:
@@ -39,15 +39,85 @@ def exercise_summary(result: ExerciseResult) -> list[tuple[str, int, int, CaseRe
     return rows
 
 
+def _format_expected(value) -> str:
+    if isinstance(value, Raises):
+        # A visible case: the reference's own message names the argument and the rule it breaks.
+        return f"a ValueError or TypeError (the reference raises {value.name}: {_format_value(value.message, 200)})"
+    return _format_value(value)
+
+
 def _failure_detail(result: ExerciseResult, failing: CaseResult) -> list[str]:
     lines = [f"      {failing.message}"]
     if failing.visible and failing.case is not None:
         function = result.id.split(".", 1)[1]
         lines.append(f"      call:     {_format_call(function, failing)}")
-        lines.append(f"      expected: {_format_value(failing.expected)}")
+        lines.append(f"      expected: {_format_expected(failing.expected)}")
         if failing.received is not None:
             lines.append(f"      received: {_format_value(failing.received)}")
+    if failing.rule:
+        lines.append(f"      rule:     {failing.rule}")
     return lines
+
+
+# Errors graded code meets when it tries what the sandbox forbids (a process, a file outside its folder, a socket).
+_REFUSED = ("PermissionError", "BlockingIOError", "OSError")
+
+# What to look at, by kind of failure (see `suite.Mismatch`). Only wrong values get the exercise's own
+# hint, which may speak of the algorithm: the other failures have nothing to do with it.
+_HINTS = {
+    "accepted_bad_input": (
+        "This input breaks a rule of the statement{rule}: check the inputs before computing and raise a "
+        "ValueError (or TypeError) whose message starts with the argument's name."
+    ),
+    "wrong_error": (
+        "The function failed with {error} on an input it must reject{rule}: test the input first and raise a "
+        "ValueError (or TypeError) naming the argument, before the computation trips over it."
+    ),
+    "refused": (
+        "The function was refused something graded code may not do ({error}): it runs confined, without "
+        "starting processes, writing outside its own folder or using the network. Compute the result directly."
+    ),
+    "raised": (
+        "The function raised an error on an input it must accept{rule}: re-read which inputs the statement "
+        "allows (a number or an array, lists as well as arrays, edge values such as t = 0 and t = 1)."
+    ),
+    "type": (
+        "Return the kind of value the statement asks for (a number, an array, a tuple); a function that ends "
+        "without `return` gives None."
+    ),
+    "shape": (
+        "Check the shape of what you return against the statement: it says which shape each kind of input gives "
+        "(one parameter or an array of them, one point or several)."
+    ),
+    "nan": (
+        "Your result holds NaN where a number belongs: look for 0/0, a division by a length, a weight or a "
+        "difference that is zero for this input."
+    ),
+    "tolerance": (
+        "Your values are close but outside the tolerance{tolerance}: look for lost precision, such as a rounded "
+        "constant, float32, a fixed number of iterations, or subtracting nearly equal numbers."
+    ),
+    "mutation": (
+        "Work on a copy of the input: np.array(x, dtype=float) copies, while np.asarray(x) and slices share memory "
+        "with the caller's array."
+    ),
+    "missing": "Define a function named {function} at the top level of a code cell.",
+}
+
+
+def failure_hint(result: ExerciseResult, failing: CaseResult) -> str:
+    """What to look at for this failure: validation, types, shapes, precision, copies, or the algorithm."""
+    error = failing.received.name if isinstance(failing.received, Raises) else "an error"
+    kind = "refused" if failing.kind == "raised" and error in _REFUSED else failing.kind
+    if kind not in _HINTS:
+        return result.hint or "Work the visible example by hand and compare your intermediate values with it."
+    tolerance = f" (rtol {result.tolerance[0]:g}, atol {result.tolerance[1]:g})" if result.tolerance else ""
+    return _HINTS[kind].format(
+        rule=f" ({failing.rule})" if failing.rule else "",
+        error=error,
+        tolerance=tolerance,
+        function=result.id.split(".", 1)[1],
+    )
 
 
 def check_text(result: ExerciseResult, load_problems: list[str] = (), skipped: list[str] = ()) -> str:
@@ -84,10 +154,7 @@ def _next_step(result: ExerciseResult, rows) -> str:
         )
     if result.stopped:
         return f"Next: {result.stopped}. Look for a loop that never ends or a very slow step."
-    advice = f'Next: fix the first failing group, "{failing.category}".'
-    if result.hint:
-        advice += f"\nHint: {result.hint}"
-    return advice
+    return f'Next: fix the first failing group, "{failing.category}".\nHint: {failure_hint(result, failing)}'
 
 
 def status_of(results: list[ExerciseResult], problems: list[str]) -> str:
@@ -125,8 +192,9 @@ def feedback_html(name: str, results: list[ExerciseResult], score: float, max_sc
             css = "pass" if ok == total else "fail"
             body.append(f"<tr class='{css}'><td>{esc(category)}</td><td>{ok}/{total}</td><td>{detail}</td></tr>")
         body.append("</table>")
-        if not result.passed and result.hint:
-            body.append(f"<p class='hint'>Hint: {esc(result.hint)}</p>")
+        failing = _first_failure(exercise_summary(result))
+        if failing is not None and not result.stopped:
+            body.append(f"<p class='hint'>Hint: {esc(failure_hint(result, failing))}</p>")
     style = (
         "body{font-family:system-ui,sans-serif;max-width:60rem;margin:2rem auto;line-height:1.4}"
         "table{border-collapse:collapse;width:100%}td,th{border:1px solid #ccc;padding:.3rem;vertical-align:top}"
@@ -151,6 +219,8 @@ def gradescope_results(results: list[ExerciseResult], score: float, notes: list[
         failing = _first_failure(exercise_summary(result))
         if failing is not None:
             lines.extend(line.strip() for line in _failure_detail(result, failing))
+            if not result.stopped:
+                lines.append(f"Hint: {failure_hint(result, failing)}")
         tests.append(
             {
                 "name": result.id,

@@ -1,37 +1,51 @@
-"""Run a submission's functions in a separate, limited process and collect what they return.
+"""Run a submission's functions in separate, confined processes and collect what they return.
 
-The grader never executes student code itself. `run_tasks` starts
-`worker.py` under a fresh interpreter (``-I -S``: no user site, no ``.pth``
-files, so the editable reference package is not on its path), in a new
-temporary folder with a scrubbed environment, and supervises it from outside:
-a wall-clock deadline per exercise and per submission enforced with SIGKILL on
-the whole process group, a memory limit, and captured, truncated output. When
-the process hangs or dies, the exercise it was on is marked and a fresh worker
-carries on with the remaining exercises.
+The grader never executes student code itself. On Linux `run_tasks` asks a
+zygote (`worker.py --zygote`, started once per grading process, NumPy already
+imported) to fork a worker for the submission, contained in its own user, PID,
+IPC and network namespaces; elsewhere it starts `worker.py` under a fresh
+interpreter. Either way the interpreter runs ``-I -S`` (no user site, no
+``.pth`` files, so the editable reference package is not on its path) with a
+scrubbed environment in a new temporary folder, confines itself before any
+submitted code runs, and is supervised from outside: a wall-clock deadline per
+exercise and per submission enforced with SIGKILL, a memory limit, and
+captured, truncated output. When the worker hangs or dies, the exercise it was
+on is marked and a fresh worker carries on with the remaining exercises,
+started while the old one is being killed. `run_tasks` returns only once every
+process of the submission has ended and its folder is gone.
 """
 
 from __future__ import annotations
 
+import atexit
+import functools
 import importlib.util
 import json
 import os
 import selectors
 import shutil
 import signal
+import socket
 import subprocess
 import sys
 import tempfile
+import threading
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from ..manifest import find_course_root
+from ..manifest import COURSE_ENV, find_course_root
 from . import sandbox
 from .worker import PACKAGES
 
-__all__ = ["Limits", "Task", "RunResult", "run_tasks", "worker_path"]
+__all__ = ["Limits", "Task", "RunResult", "run_tasks", "probe", "shutdown", "worker_path"]
 
 WORKER = Path(__file__).with_name("worker.py")
+# A zygote's start is an interpreter importing NumPy, on a machine that may be busy grading.
+START_SECONDS = 60.0
+# How long the keeper may take to report the worker it forked, and a killed worker to be gone.
+SPAWN_SECONDS = 10.0
+REAP_SECONDS = 10.0
 
 
 @dataclass(frozen=True)
@@ -46,16 +60,25 @@ class Limits:
 
 @dataclass(frozen=True)
 class Task:
-    """One exercise to run: the student function's name and its encoded cases."""
+    """One exercise to run: the student function's name and its encoded cases (and their JSON, if at hand)."""
 
     exercise: str
     function: str
     cases: list
+    cases_json: str = ""
+
+    def request_json(self) -> str:
+        cases = self.cases_json or json.dumps(self.cases)
+        return f'{{"exercise": {json.dumps(self.exercise)}, "function": {json.dumps(self.function)}, "cases": {cases}}}'
 
 
 @dataclass
 class RunResult:
-    """What came back: case events per exercise, and why an exercise stopped early, if it did."""
+    """What came back: case events per exercise, why an exercise stopped early, and the confinement.
+
+    `sandbox` is the worker's note of what it applied, `confined` whether that holds graded code
+    (files, processes and their number), `gaps` what was left open (keys of `sandbox.RISKS`).
+    """
 
     load_problems: list[str] = field(default_factory=list)
     events: dict[str, list[dict]] = field(default_factory=dict)
@@ -64,6 +87,14 @@ class RunResult:
     output_truncated: bool = False
     seconds: dict[str, float] = field(default_factory=dict)
     sandbox: str = ""
+    confined: bool = False
+    gaps: list[str] = field(default_factory=list)
+
+    def record_sandbox(self, note: str, confined: bool, gaps: list[str]) -> None:
+        """Keep the weakest confinement any worker of this run reported."""
+        if not self.sandbox or (self.confined and not confined):
+            self.sandbox, self.confined = note, confined
+        self.gaps = sorted(set(self.gaps) | set(gaps))
 
 
 def worker_path() -> Path:
@@ -76,31 +107,61 @@ def _package_home(name: str) -> Path:
     return Path(next(iter(spec.submodule_search_locations))).resolve().parent
 
 
+def _hidden_folders() -> tuple[tuple[str, ...], str | None]:
+    """What graded code must not read, wherever the course is installed: its packages, and its checkout."""
+    return _hidden_folders_for(tuple(sys.path), os.environ.get(COURSE_ENV), os.getcwd())
+
+
+@functools.lru_cache(maxsize=16)
+def _hidden_folders_for(path: tuple[str, ...], course: str | None, cwd: str) -> tuple[tuple[str, ...], str | None]:
+    found = set()
+    for name in PACKAGES:
+        try:
+            found.add(str(_package_home(name) / name))
+        except (ImportError, AttributeError, TypeError, StopIteration):
+            continue
+    try:
+        root = str(find_course_root())
+    except FileNotFoundError:
+        root = None
+    return tuple(sorted(found)), root
+
+
 def _allowed_path(allow_reference: bool) -> list[str]:
     """The grader's import path minus every folder that would expose the course's packages or files.
 
-    Untrusted runs keep the interpreter's own environment (NumPy lives there, and so does a normal,
-    non-editable install of the course, whose packages the worker refuses to import by name) and
-    lose every other entry that holds `cagd_ref` or `cagd_course` or lies inside the course folder
-    (the checkout with its reference and hidden suites). Trusted runs (validating the reference
-    itself) get the reference's folder first.
+    Computed once per import path, course and environment: it looks at every entry on disk.
     """
-    entries = [entry for entry in sys.path if entry and os.path.isdir(entry)]
+    key = (tuple(sys.path), sys.prefix, os.environ.get(COURSE_ENV), os.getcwd(), allow_reference)
+    return list(_allowed_path_for(*key))
+
+
+@functools.lru_cache(maxsize=16)
+def _allowed_path_for(path: tuple[str, ...], prefix: str, course, cwd: str, allow_reference: bool) -> tuple[str, ...]:
+    """What `_allowed_path` returns, for the import path `path` of the environment at `prefix`.
+
+    Untrusted runs keep the interpreter's own environment (NumPy lives there, and so does a normal,
+    non-editable install of the course, whose packages the worker refuses to import by name and
+    whose folders it cannot read) and lose every other entry that holds `cagd_ref` or `cagd_course`
+    or lies inside the course folder (the checkout with its reference and hidden suites). Trusted
+    runs (validating the reference itself) get the reference's folder first.
+    """
+    entries = [entry for entry in path if entry and os.path.isdir(entry)]
     if allow_reference:
-        return [str(_package_home("cagd_ref"))] + entries
+        return (str(_package_home("cagd_ref")), *entries)
     hidden = {_package_home(name) for name in PACKAGES}
     try:
         hidden.add(find_course_root())
     except FileNotFoundError:
         pass
-    environment = Path(sys.prefix).resolve()
+    environment = Path(prefix).resolve()
     allowed = []
     for entry in entries:
         folder = Path(entry).resolve()
         exposes = any(folder.is_relative_to(h) for h in hidden) or any((folder / n).exists() for n in PACKAGES)
         if folder.is_relative_to(environment) or not exposes:
             allowed.append(entry)
-    return allowed
+    return tuple(allowed)
 
 
 def _environment(workdir: str) -> dict[str, str]:
@@ -134,55 +195,278 @@ def _describe_exit(code: int | None) -> str:
     return f"the process exited with code {code} before finishing"
 
 
-class _Session:
-    """One worker process working through a list of tasks."""
+class _StartError(Exception):
+    """No worker could be started (the zygote did not come up or did not fork)."""
 
-    def __init__(self, statements, tasks, limits, allow_reference, result, started):
-        self.tasks = tasks
-        self.limits = limits
-        self.result = result
-        self.started = started
-        self.workdir = tempfile.mkdtemp(prefix="cagd-grade-")
+
+class _ForkedWorker:
+    """A worker forked by the zygote: pipes to it, a pidfd to kill it, and its keeper's report of its end."""
+
+    def __init__(self, request, events: int, output: int, status: socket.socket, pidfd: int):
+        self.request, self.events, self.output, self.status, self.pidfd = request, events, output, status, pidfd
+        self.code: int | None = None
+        self.ended = False
+
+    def kill(self) -> None:
+        try:
+            signal.pidfd_send_signal(self.pidfd, signal.SIGKILL)
+        except OSError:  # it has already ended
+            pass
+
+    def exit_code(self, timeout: float) -> int | None:
+        """The worker's exit code (negative: the signal), once its keeper has reaped it; None if unknown."""
+        if not self.ended:
+            self.status.settimeout(timeout)
+            try:
+                data = self.status.recv(4096)
+                event = json.loads(data) if data else {}
+            except (OSError, ValueError):
+                return None
+            self.ended = True
+            if event.get("event") == "exit" and isinstance(event.get("code"), int):
+                self.code = event["code"]
+        return self.code
+
+    def close(self) -> None:
+        self.kill()
+        # The keeper reports only after reaping the worker, whose PID namespace died with it, and then
+        # exits: the end of its socket says it is gone too.
+        self.exit_code(REAP_SECONDS)
+        try:
+            while self.status.recv(4096):
+                pass
+        except OSError:
+            pass
+        for fd in (self.events, self.output, self.pidfd):
+            os.close(fd)
+        self.status.close()
+        if not self.request.closed:
+            self.request.close()
+
+
+class _ExecWorker:
+    """A worker started as a fresh interpreter (platforms without the zygote): a process group to kill."""
+
+    def __init__(self, workdir: str):
         read_fd, write_fd = os.pipe()
         self.proc = subprocess.Popen(
             [sys.executable, "-I", "-S", str(WORKER), str(write_fd)],
             stdin=subprocess.PIPE,
             stdout=subprocess.PIPE,
             stderr=subprocess.STDOUT,
-            cwd=self.workdir,
-            env=_environment(self.workdir),
+            cwd=workdir,
+            env=_environment(workdir),
             pass_fds=(write_fd,),
             start_new_session=True,
         )
         os.close(write_fd)
-        self.events = os.fdopen(read_fd, "rb", buffering=0)
+        self.request, self.events, self.output = self.proc.stdin, read_fd, self.proc.stdout.fileno()
+
+    def kill(self) -> None:
+        try:
+            os.killpg(self.proc.pid, signal.SIGKILL)
+        except (ProcessLookupError, PermissionError):
+            pass
+
+    def exit_code(self, timeout: float) -> int | None:
+        try:
+            return self.proc.wait(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            return None
+
+    def close(self) -> None:
+        self.kill()
+        self.proc.wait()
+        os.close(self.events)
+        self.proc.stdout.close()
+        if not self.request.closed:
+            self.request.close()
+
+
+class _Zygote:
+    """A clean interpreter with NumPy imported that forks one contained worker per request."""
+
+    def __init__(self, path: list[str]):
+        ours, theirs = socket.socketpair(socket.AF_UNIX, socket.SOCK_SEQPACKET)
+        folder = tempfile.gettempdir()
+        command = [sys.executable, "-I", "-S", str(WORKER), "--zygote", str(theirs.fileno()), str(os.getpid())]
+        try:
+            self.proc = subprocess.Popen(
+                [*command, str(_OWNER[0] or os.getpid())],
+                stdin=subprocess.PIPE,
+                stdout=subprocess.DEVNULL,
+                cwd=folder,
+                env=_environment(folder),
+                pass_fds=(theirs.fileno(),),
+                # Not in the terminal's process group: Ctrl-C stops the grader, which then stops the zygote.
+                start_new_session=True,
+            )
+        except OSError as err:
+            ours.close()
+            raise _StartError(f"the zygote could not be started ({err})") from None
+        finally:
+            theirs.close()
+        self.control = ours
+        self.lock = threading.Lock()
+        try:
+            self.proc.stdin.write(json.dumps({"path": path}).encode())
+            self.proc.stdin.close()
+            ours.settimeout(START_SECONDS)
+            ready = ours.recv(16)
+        except OSError as err:
+            ready = str(err).encode()
+        if ready != b"ready":
+            self.close()
+            raise _StartError(f"the zygote did not start ({ready.decode(errors='replace') or 'it exited'})")
+        ours.settimeout(None)
+
+    def alive(self) -> bool:
+        return self.proc.poll() is None
+
+    def spawn(self, options: dict) -> _ForkedWorker:
+        request_r, request_w = os.pipe()
+        events_r, events_w = os.pipe()
+        output_r, output_w = os.pipe()
+        status, keeper_end = socket.socketpair(socket.AF_UNIX, socket.SOCK_SEQPACKET)
+        mine = (request_w, events_r, output_r)
+        try:
+            with self.lock:
+                socket.send_fds(
+                    self.control, [json.dumps(options).encode()], [request_r, events_w, output_w, keeper_end.fileno()]
+                )
+            status.settimeout(SPAWN_SECONDS)
+            message, fds, _, _ = socket.recv_fds(status, 4096, 1)
+            event = json.loads(message) if message else {}
+        except (OSError, ValueError) as err:
+            event, fds = {"error": str(err)}, []
+        finally:
+            for fd in (request_r, events_w, output_w):
+                os.close(fd)
+            keeper_end.close()
+        if event.get("event") != "started" or len(fds) != 1:
+            for fd in (*mine, *fds):
+                os.close(fd)
+            status.close()
+            raise _StartError(event.get("error") or "the zygote did not fork a worker")
+        status.settimeout(None)
+        return _ForkedWorker(os.fdopen(request_w, "wb"), events_r, output_r, status, fds[0])
+
+    def close(self) -> None:
+        # The zygote ends when its socket closes, killing any keeper still running.
+        self.control.close()
+        try:
+            self.proc.wait(timeout=REAP_SECONDS)
+        except subprocess.TimeoutExpired:
+            self.proc.kill()
+            self.proc.wait()
+
+
+_LOCK = [threading.Lock()]
+_ZYGOTE: list[_Zygote] = []
+# The process that started the grading run (a `--jobs` process's parent), shown in the zygote's command line.
+_OWNER: list[int | None] = [None]
+
+
+def _forks_workers() -> bool:
+    return sys.platform.startswith("linux") and hasattr(os, "pidfd_open") and hasattr(socket, "send_fds")
+
+
+def _zygote() -> _Zygote:
+    with _LOCK[0]:
+        if _ZYGOTE and not _ZYGOTE[0].alive():
+            _ZYGOTE.pop().close()
+        if not _ZYGOTE:
+            _ZYGOTE.append(_Zygote(_allowed_path(allow_reference=False)))
+        return _ZYGOTE[0]
+
+
+def _spawn(workdir: str):
+    if not _forks_workers():
+        return _ExecWorker(workdir)
+    options = {"disable": sandbox.disabled()}
+    try:
+        return _zygote().spawn(options)
+    except _StartError:
+        # One retry with a fresh zygote: the old one may have been killed from outside.
+        shutdown()
+        return _zygote().spawn(options)
+
+
+def shutdown() -> None:
+    """Stop this process's zygote and every worker it still has (it also stops when this process ends)."""
+    with _LOCK[0]:
+        while _ZYGOTE:
+            _ZYGOTE.pop().close()
+
+
+def set_owner(pid: int) -> None:
+    """Name `pid` as the grading run's process in the zygote's command line (for `ps`, and tests)."""
+    _OWNER[0] = pid
+
+
+def _forget_after_fork() -> None:
+    # A forked copy of the grader starts its own zygote instead of sharing this process's socket.
+    for zygote in _ZYGOTE:
+        zygote.control.close()
+    _ZYGOTE.clear()
+    _LOCK[0] = threading.Lock()
+
+
+atexit.register(shutdown)
+os.register_at_fork(after_in_child=_forget_after_fork)
+
+
+class _Session:
+    """One worker process working through a list of tasks."""
+
+    def __init__(self, statements, tasks, limits, allow_reference, required, result, started):
+        self.tasks = tasks
+        self.limits = limits
+        self.result = result
+        self.started = started
+        self.required = required
+        self.current: str | None = None
+        self.done = False
+        self.sandboxed = False
+        self.loaded = False
+        self.workdir = tempfile.mkdtemp(prefix="cagd-grade-")
         path = _allowed_path(allow_reference)
+        hidden, checkout = _hidden_folders()
+        policy = sandbox.policy(self.workdir, limits.memory_mb, path, allow_reference, hidden, checkout, required)
         request = {
             "statements": statements,
-            "tasks": [{"exercise": t.exercise, "function": t.function, "cases": t.cases} for t in tasks],
             "path": path,
             "allow_reference": allow_reference,
-            "sandbox": sandbox.policy(self.workdir, limits.memory_mb, path, allow_reference),
+            "workdir": self.workdir,
+            "environment": _environment(self.workdir),
+            "sandbox": policy,
         }
         try:
-            self.proc.stdin.write(json.dumps(request).encode())
-            self.proc.stdin.close()
-        except BrokenPipeError:
+            self.worker = _spawn(self.workdir)
+        except BaseException:
+            shutil.rmtree(self.workdir, ignore_errors=True)
+            raise
+        # The cases go in as the JSON text the grader already made of them.
+        text = json.dumps(request)[:-1] + ', "tasks": [' + ",".join(t.request_json() for t in tasks) + "]}"
+        try:
+            self.worker.request.write(text.encode())
+            self.worker.request.close()
+        except OSError:  # the worker is already gone; its exit is reported below
             pass
-        self.current: str | None = None
         self.exercise_started = time.monotonic()
-        self.done = False
-        self.loaded = False
 
     def deadline(self) -> float:
         """When the exercise in progress (or the loading) and the submission as a whole run out of time."""
         return min(self.exercise_started + self.limits.exercise_seconds, self.started + self.limits.submission_seconds)
 
     def run(self) -> list[Task]:
-        """Drive the worker until it finishes, dies or overruns; return the tasks still to do."""
+        """Drive the worker until it finishes, dies or overruns; return the tasks still to do.
+
+        The worker is killed on the way out; `finish` waits for it to be gone.
+        """
         selector = selectors.DefaultSelector()
-        selector.register(self.events, selectors.EVENT_READ, "events")
-        selector.register(self.proc.stdout, selectors.EVENT_READ, "output")
+        selector.register(self.worker.events, selectors.EVENT_READ, "events")
+        selector.register(self.worker.output, selectors.EVENT_READ, "output")
         buffer = b""
         open_streams = 2
         try:
@@ -191,9 +475,9 @@ class _Session:
                 if timeout <= 0:
                     return self._overrun()
                 for key, _ in selector.select(timeout):
-                    chunk = os.read(key.fileobj.fileno(), 65536)
+                    chunk = os.read(key.fd, 65536)
                     if not chunk:
-                        selector.unregister(key.fileobj)
+                        selector.unregister(key.fd)
                         open_streams -= 1
                         continue
                     if key.data == "output":
@@ -208,7 +492,12 @@ class _Session:
             return self._died()
         finally:
             selector.close()
-            self._stop()
+            self.worker.kill()
+
+    def finish(self) -> None:
+        """Wait until the worker and everything it started are gone, and remove its folder."""
+        self.worker.close()
+        shutil.rmtree(self.workdir, ignore_errors=True)
 
     def _handle(self, line: bytes) -> None:
         """Process one event from the worker, checking it is the one the protocol allows next."""
@@ -217,10 +506,16 @@ class _Session:
             kind = event["event"]
         except (ValueError, KeyError, TypeError):
             raise _ProtocolError("the graded process wrote something that is not a grader event") from None
-        if kind == "loaded":
+        if not self.sandboxed:
+            # The worker reports its confinement before any submitted code runs: nothing can forge it.
+            if kind != "sandbox":
+                raise _ProtocolError("the graded process did not report its confinement first")
+            self._sandbox(event)
+        elif kind == "sandbox":
+            raise _ProtocolError("the graded process reported its confinement twice")
+        elif kind == "loaded":
             self.loaded = True
             self.result.load_problems = [str(p) for p in event.get("problems", [])][:50]
-            self.result.sandbox = str(event.get("sandbox", ""))[:200]
         elif kind == "start":
             expected = self.tasks[0].exercise if self.tasks else None
             if event.get("exercise") != expected:
@@ -244,6 +539,18 @@ class _Session:
             self.current = None
         elif kind == "done":
             self.done = not self.tasks
+
+    def _sandbox(self, event: dict) -> None:
+        self.sandboxed = True
+        gaps = [str(g) for g in event.get("gaps", [])][:10]
+        self.result.record_sandbox(str(event.get("note", ""))[:300], event.get("confined") is True, gaps)
+        if self.required and event.get("confined") is not True:
+            # The worker refuses too; nothing of the submission has run.
+            reason = "not graded: graded code cannot be confined here (" + ", ".join(gaps) + ")"
+            for task in self.tasks:
+                self.result.stopped[task.exercise] = reason
+            self.tasks = []
+            self.done = True
 
     def _capture(self, chunk: bytes) -> None:
         room = self.limits.output_bytes - len(self.result.output.encode())
@@ -275,21 +582,7 @@ class _Session:
         return self._stop_current(f"timed out after {self.limits.exercise_seconds:g} s")
 
     def _died(self) -> list[Task]:
-        try:
-            code = self.proc.wait(timeout=2)
-        except subprocess.TimeoutExpired:
-            code = None
-        return self._stop_current(_describe_exit(code))
-
-    def _stop(self) -> None:
-        try:
-            os.killpg(self.proc.pid, signal.SIGKILL)
-        except (ProcessLookupError, PermissionError):
-            pass
-        self.proc.wait()
-        self.events.close()
-        self.proc.stdout.close()
-        shutil.rmtree(self.workdir, ignore_errors=True)
+        return self._stop_current(_describe_exit(self.worker.exit_code(timeout=2)))
 
 
 class _ProtocolError(Exception):
@@ -297,16 +590,44 @@ class _ProtocolError(Exception):
 
 
 def run_tasks(
-    statements: list[dict], tasks: list[Task], limits: Limits = Limits(), allow_reference: bool = False
+    statements: list[dict],
+    tasks: list[Task],
+    limits: Limits = Limits(),
+    allow_reference: bool = False,
+    require_confinement: bool = False,
 ) -> RunResult:
-    """Run every task in isolated worker processes, restarting after a hang or crash."""
+    """Run every task in contained worker processes, restarting after a hang or crash.
+
+    With `require_confinement` a worker that cannot confine itself runs nothing: every task is
+    marked "not graded". Returns once every process of the submission has ended.
+    """
     result = RunResult()
     started = time.monotonic()
     remaining = list(tasks)
-    while remaining:
-        session = _Session(statements, remaining, limits, allow_reference, result, started)
-        try:
-            remaining = session.run()
-        except _ProtocolError as err:
-            remaining = session._stop_current(str(err))
+    previous = None
+    try:
+        while True:
+            try:
+                session = _Session(statements, remaining, limits, allow_reference, require_confinement, result, started)
+            except _StartError as err:
+                for task in remaining:
+                    result.stopped.setdefault(task.exercise, f"not run: the grader could not start a worker ({err})")
+                break
+            if previous is not None:
+                previous.finish()  # the replacement is already starting while the old worker is reaped
+            previous = session
+            try:
+                remaining = session.run()
+            except _ProtocolError as err:
+                remaining = session._stop_current(str(err))
+            if not remaining:
+                break
+    finally:
+        if previous is not None:
+            previous.finish()
     return result
+
+
+def probe(limits: Limits = Limits()) -> RunResult:
+    """Start one worker with nothing to grade: the confinement graded code gets on this machine."""
+    return run_tasks([], [], limits)

@@ -17,10 +17,12 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["Case", "Exercise", "Raises", "close", "exact", "expected_value"]
+__all__ = ["Case", "Exercise", "Mismatch", "Raises", "close", "exact", "expected_value"]
 
 # Bad input must be rejected with one of these (the contract of cagd_ref).
 INPUT_ERRORS = ("ValueError", "TypeError")
+# A value off by at most this many times the tolerance is a near miss (precision), not a wrong formula.
+NEAR_MISS = 1e4
 
 
 @dataclass(frozen=True)
@@ -29,12 +31,16 @@ class Case:
 
     Cases of a `visible` category show their input, the expected and the
     received value in the student's feedback; hidden ones only say pass/fail.
+    `rule` is the rule of the exercise's statement the case tests, in the
+    statement's words (e.g. "q must not be the zero vector"); the feedback
+    shows it when the case fails, visible or not.
     """
 
     category: str
     args: tuple
     kwargs: dict = field(default_factory=dict)
     visible: bool = False
+    rule: str = ""
 
 
 @dataclass(frozen=True)
@@ -50,13 +56,19 @@ Comparison = Callable[[Any, Any], "str | None"]
 
 @dataclass(frozen=True)
 class Exercise:
-    """One graded exercise: ``id`` is ``NN.function_name`` as listed in book.toml."""
+    """One graded exercise: ``id`` is ``NN.function_name`` as listed in book.toml.
+
+    `hint` is shown when values come out wrong (it may speak of the algorithm); `rules` gives the
+    statement's rule for every case of a category (``{"bad input": "..."}``) unless a case names
+    its own `Case.rule`.
+    """
 
     id: str
     reference: Callable
     cases: Callable[[np.random.Generator], list[Case]]
     compare: Comparison | None = None
     hint: str = ""
+    rules: dict[str, str] = field(default_factory=dict, hash=False)
 
     @property
     def function(self) -> str:
@@ -64,6 +76,26 @@ class Exercise:
 
     def comparison(self) -> Comparison:
         return self.compare or close()
+
+    def rule_for(self, case: Case) -> str:
+        """The statement's rule a case tests, if the suite names one."""
+        return case.rule or self.rules.get(case.category, "")
+
+
+class Mismatch(str):
+    """A comparison's message, with the kind of failure it reports (feedback picks its hint by kind).
+
+    Kinds: ``accepted_bad_input``, ``wrong_error``, ``raised``, ``type``, ``shape``, ``nan``,
+    ``tolerance`` (close, but not within it), ``value``; the engine adds ``mutation``, ``missing``
+    and ``stopped``. A custom comparison may return a plain string: it counts as ``value``.
+    """
+
+    kind: str
+
+    def __new__(cls, text: str, kind: str):
+        made = super().__new__(cls, text)
+        made.kind = kind
+        return made
 
 
 def expected_value(exercise: Exercise, case: Case):
@@ -89,6 +121,8 @@ def close(rtol: float = 1e-9, atol: float = 1e-9) -> Comparison:
     def compare(expected, received) -> str | None:
         return _compare(expected, received, rtol, atol, "")
 
+    # Read by the feedback, which quotes the tolerance a result missed.
+    compare.rtol, compare.atol = rtol, atol
     return compare
 
 
@@ -102,17 +136,25 @@ def _compare(expected, received, rtol, atol, where: str) -> str | None:
     if isinstance(expected, Raises):
         if isinstance(received, Raises) and received.name in INPUT_ERRORS:
             return None
-        got = f"raised {received.name}" if isinstance(received, Raises) else f"returned {_describe(received)}"
-        return f"expected a ValueError or TypeError for this bad input, but the function {got}"
+        if isinstance(received, Raises):
+            return Mismatch(
+                f"expected a ValueError or TypeError for this bad input, but the function raised {received.name}",
+                "wrong_error",
+            )
+        return Mismatch(
+            f"expected a ValueError or TypeError for this bad input, but the function returned {_describe(received)}",
+            "accepted_bad_input",
+        )
     if isinstance(received, Raises):
-        return f"raised {received.name}: {received.message}"[:300]
+        return Mismatch(f"raised {received.name}: {received.message}"[:300], "raised")
     if isinstance(expected, str):
         if expected != received:
-            return f"expected {expected!r}{at}, got {_describe(received)}"
+            kind = "value" if isinstance(received, str) else "type"
+            return Mismatch(f"expected {expected!r}{at}, got {_describe(received)}", kind)
         return None
     if isinstance(expected, tuple):
         if not isinstance(received, (tuple, list)) or len(received) != len(expected):
-            return f"expected a tuple of {len(expected)} values{at}, got {_describe(received)}"
+            return Mismatch(f"expected a tuple of {len(expected)} values{at}, got {_describe(received)}", "type")
         for i, (e, r) in enumerate(zip(expected, received)):
             problem = _compare(e, r, rtol, atol, f"{where}[{i}]")
             if problem:
@@ -124,20 +166,34 @@ def _compare(expected, received, rtol, atol, where: str) -> str | None:
 def _compare_numbers(expected: np.ndarray, received, rtol, atol, at: str) -> str | None:
     if isinstance(received, (str, bytes)) or received is None:
         wanted = "a number" if expected.ndim == 0 else f"an array of shape {expected.shape}"
-        return f"expected {wanted}{at}, got {_describe(received)}"
+        return Mismatch(f"expected {wanted}{at}, got {_describe(received)}", "type")
     try:
         got = np.asarray(received, dtype=float)
     except (TypeError, ValueError):
-        return f"expected numbers{at}, got {_describe(received)}"
+        return Mismatch(f"expected numbers{at}, got {_describe(received)}", "type")
     if got.shape != expected.shape:
-        return f"expected shape {expected.shape}{at}, got shape {got.shape}"
-    if np.isnan(got).any() and not np.isnan(expected).any():
-        return f"got NaN{at} where a number was expected"
-    if not np.allclose(got, expected, rtol=rtol, atol=atol, equal_nan=True):
+        return Mismatch(f"expected shape {expected.shape}{at}, got shape {got.shape}", "shape")
+    # np.allclose(got, expected, rtol, atol, equal_nan=True), without its overhead on small arrays.
+    with np.errstate(invalid="ignore", over="ignore"):
         diff = np.abs(got - expected)
-        worst = np.unravel_index(int(np.nanargmax(np.where(np.isnan(diff), np.inf, diff))), diff.shape)
+        close_enough = (diff <= atol + rtol * np.abs(expected)) | (got == expected)
+    if not close_enough.all():
+        close_enough |= np.isnan(got) & np.isnan(expected)
+    if not close_enough.all():
+        if np.isnan(got).any() and not np.isnan(expected).any():
+            return Mismatch(f"got NaN{at} where a number was expected", "nan")
+        badness = np.where(close_enough, -1.0, np.where(np.isnan(diff), np.inf, diff))
+        worst = np.unravel_index(int(np.argmax(badness)), diff.shape)
         index = f" (entry {tuple(int(i) for i in worst)})" if expected.ndim else ""
-        return f"wrong value{at}{index}: expected {_short(expected[worst])}, got {_short(got[worst])}"
+        wanted, off = float(expected[worst]), float(diff[worst])
+        allowed = atol + rtol * abs(wanted)
+        if 0 < allowed < math.inf and off <= NEAR_MISS * allowed:
+            return Mismatch(
+                f"value{at}{index} outside the tolerance: expected {_short(wanted)}, got {_short(got[worst])} "
+                f"(off by {off:.2g}, allowed {allowed:.2g})",
+                "tolerance",
+            )
+        return Mismatch(f"wrong value{at}{index}: expected {_short(wanted)}, got {_short(got[worst])}", "value")
     return None
 
 

@@ -50,10 +50,12 @@ def test_every_submission_gets_one_row(graded):
     assert rows["dee"]["score"] == "0" and rows["dee"]["status"] == "invalid notebook (not valid JSON)"
 
 
-def test_header_lists_the_exercises_of_the_graded_chapter_and_the_seed(graded):
+def test_header_lists_the_exercises_of_the_graded_chapter_the_seed_and_the_confinement(graded):
     header = (graded / "gradebook.csv").read_text().splitlines()[0].split(",")
-    assert header[:4] == ["submission", "score", "max_score", "status"] and header[-1] == "seed"
-    assert all(h.startswith("02.") for h in header[4:-1]) and len(header) == 15
+    assert header[:4] == ["submission", "score", "max_score", "status"] and header[-2:] == ["seed", "confinement"]
+    assert all(h.startswith("02.") for h in header[4:-2]) and len(header) == 16
+    rows = {r["submission"]: r for r in _rows(graded)}
+    assert "landlock ABI" in rows["ada"]["confinement"] and rows["dee"]["confinement"] == ""
 
 
 def test_feedback_and_gradescope_results_are_written(graded):
@@ -81,10 +83,11 @@ def test_an_interrupted_run_resumes_and_force_regrades(class_folder, tmp_path):
     assert forced.graded == 4 and len(_rows(out)) == 4
 
 
-def test_command_line_grading_prints_a_summary(class_folder, tmp_path, capsys):
+def test_command_line_grading_prints_a_summary_with_the_confinement(class_folder, tmp_path, capsys):
     assert main(["grade", str(class_folder / "ada.ipynb"), "--out", str(tmp_path), "--chapter", "1"]) == 0
     out = capsys.readouterr().out
     assert "graded 1 submission" in out and "mean score 10.00 / 10" in out
+    assert "\nconfinement: " in out and "WARNING" not in out
 
 
 def test_duplicate_submission_names_are_refused(class_folder, tmp_path):

@@ -1,6 +1,7 @@
 """The grading engine: extraction, the isolated worker, comparisons, scoring and the self-check."""
 
 import json
+import math
 import sys
 
 import numpy as np
@@ -8,7 +9,7 @@ import pytest
 
 from cagd_course.grading.engine import CaseResult, grade_statements, prepare, score, submission_seed
 from cagd_course.grading.extract import SubmissionError, extract_notebook, extract_source
-from cagd_course.grading.report import check_text
+from cagd_course.grading.report import check_text, failure_hint
 from cagd_course.grading.runner import Limits
 from cagd_course.grading.suite import Case, Exercise, Raises, close, exact
 from cagd_course.grading.worker import Unsupported, decode, encode
@@ -199,7 +200,9 @@ def test_modifying_an_input_in_place_fails_the_case():
         1,
     )
     result = _grade(source).exercises[1]
-    assert result.score == 0 and "modified its input" in result.cases[0].message
+    # Named as the statement names it (the reference's parameter), not by its position.
+    assert result.score == 0 and "changed its argument `points` in place" in result.cases[0].message
+    assert result.cases[0].kind == "mutation" and "copy" in failure_hint(result, result.cases[0])
 
 
 def test_bad_input_cases_demand_a_value_or_type_error():
@@ -238,9 +241,10 @@ def test_seeds_depend_on_the_run_seed_and_the_submission_name_only():
     assert len({submission_seed(0, "ann"), submission_seed(1, "ann"), submission_seed(0, "bob")}) == 3
 
 
-def test_the_worker_reports_its_file_system_confinement():
+def test_the_worker_reports_its_confinement():
     outcome = _grade(GOOD)
     assert "landlock ABI" in outcome.run.sandbox, outcome.run.sandbox
+    assert outcome.run.confined and outcome.run.gaps == []
 
 
 def test_the_worker_path_keeps_the_environment_and_drops_checkouts(tmp_path, monkeypatch):
@@ -259,3 +263,30 @@ def test_the_worker_path_keeps_the_environment_and_drops_checkouts(tmp_path, mon
     monkeypatch.setenv("CAGD_COURSE", str(checkout))
     # A normal install lives in the environment (the worker refuses its imports by name); the checkout goes.
     assert runner._allowed_path(allow_reference=False) == [str(site), str(other)]
+
+
+def test_numpy_scalars_travel_like_floats_nan_included():
+    for value in (np.float64(1.5), np.float64("nan"), np.float64("-inf"), np.float32(0.25)):
+        back = decode(json.loads(json.dumps(encode(value))))
+        assert isinstance(back, float)
+        assert back == float(value) or (math.isnan(back) and math.isnan(value))
+
+
+def test_a_dataclass_in_a_submission_is_built_with_its_annotations():
+    source = (
+        "from dataclasses import dataclass\n"
+        "@dataclass(frozen=True)\n"
+        "class Pair:\n    a: float\n    b: float\n"
+        "def de_casteljau(points, t):\n"
+        "    import numpy as np\n"
+        "    levels = np.asarray(points, float)\n"
+        "    ts = np.atleast_1d(np.asarray(t, float))[:, None, None]\n"
+        "    P = np.broadcast_to(levels, (len(ts),) + levels.shape).copy()\n"
+        "    while P.shape[1] > 1:\n"
+        "        P = (1 - ts) * P[:, :-1] + ts * P[:, 1:]\n"
+        "    Pair(1.0, 2.0)\n"
+        "    return P[0, 0] if np.ndim(t) == 0 else P[:, 0]\n"
+    )
+    outcome = _grade(source, {"02.de_casteljau": EXERCISES["02.de_casteljau"]})
+    assert not outcome.run.load_problems
+    assert outcome.score > 0

@@ -2,17 +2,23 @@
 
 Every hostile submission is the correct chapter-1 solution plus one later cell
 that redefines `projection` (1 point) badly, so the expected row is 9/10 (or 10)
-with a plain-words status. The whole class is graded once, with short limits.
+with a plain-words status. The whole class is graded once, with short limits,
+and afterwards no process any of them started may be left: each hostile
+process renames itself ``hx-...`` so the test can look for it.
 """
 
 import csv
 import hashlib
 import json
+import shutil
+import tempfile
 from pathlib import Path
 
 import nbformat
 import pytest
+import tomllib
 
+from cagd_course.grading import runner
 from cagd_course.grading.classroom import grade_class
 from cagd_course.grading.runner import Limits
 
@@ -20,6 +26,18 @@ ROOT = Path(__file__).resolve().parents[2]
 SOLUTION = Path(__file__).parent / "fixtures" / "submissions" / "complete.ipynb"
 LIMITS = Limits(exercise_seconds=3, submission_seconds=30, memory_mb=512, output_bytes=10_000)
 OUT_MARKER = "@OUT@"
+# Files of the checkout a submission tries to overwrite: the course's own, which no other test edits while this
+# one runs (book.toml is edited by people, so it is checked for the attack's mark, not hashed), and a decoy.
+HIDDEN_SUITE = ROOT / "tests" / "hidden" / "ch01.py"
+DECOY = Path(__file__).parent / ".hostile-decoy.txt"
+# Another submission's scratch folder, as graded code would find it next to its own.
+OTHER_FOLDER_MARKER = "@OTHER@"
+NAME = "import ctypes\ndef _name(label):\n    ctypes.CDLL(None).prctl(15, label, 0, 0, 0)\n"
+CORRECT = (
+    "    p, q = np.asarray(p, float), np.asarray(q, float)\n"
+    "    if p.shape != q.shape or p.ndim != 1 or not q.any():\n        raise ValueError('p, q')\n"
+    "    return p @ q / (q @ q) * q"
+)
 
 HOSTILE = {
     "infinite_loop": ("def projection(p, q):\n    while True:\n        pass", 9, "01.projection: timed out after 3 s"),
@@ -79,12 +97,72 @@ HOSTILE = {
         + "', '"
         + OUT_MARKER
         + "/gradebook.csv', '"
-        + str(ROOT / "tests" / "hidden" / "ch01.py")
+        + str(HIDDEN_SUITE)
+        + "', '"
+        + str(DECOY)
         + "', '"
         + OUT_MARKER
         + "/other/results.json']:\n"
         "        with open(target, 'w') as handle:\n            handle.write('pwned')",
         9,
+        "ok",
+    ),
+    # Confined, the reference cannot even be read: 0 points for the exercise that tries.
+    "reads_reference_by_path": (
+        "import importlib, importlib.util, sys\n"
+        "def projection(p, q):\n"
+        f"    root = {str(ROOT / 'cagd_ref')!r}\n"
+        "    spec = importlib.util.spec_from_file_location('stolen', root + '/__init__.py', "
+        "submodule_search_locations=[root])\n"
+        "    module = importlib.util.module_from_spec(spec)\n"
+        "    sys.modules['stolen'] = module\n"
+        "    spec.loader.exec_module(module)\n"
+        "    return importlib.import_module('stolen.geometry').projection(p, q)",
+        9,
+        "ok",
+    ),
+    "daemonises": (
+        NAME + "import os, time\n"
+        "def projection(p, q):\n"
+        "    if os.fork() == 0:\n"
+        "        os.setsid()\n"
+        "        if os.fork() == 0:\n"
+        "            _name(b'hx-daemonises')\n"
+        "            time.sleep(120)\n"
+        "        os._exit(0)\n"
+        "    return q",
+        9,
+        "ok",
+    ),
+    "fork_bomb": (
+        NAME + "import os\ndef projection(p, q):\n    _name(b'hx-fork_bomb')\n    while True:\n        os.fork()",
+        9,
+        "ok",
+    ),
+    "writes_other_submission": (
+        "import glob, os\nimport numpy as np\n"
+        "def projection(p, q):\n"
+        f"    for folder in glob.glob({tempfile.gettempdir()!r} + '/cagd-grade-*') + ['{OTHER_FOLDER_MARKER}']:\n"
+        "        for name in ('results.json', 'pwned.txt'):\n"
+        "            try:\n"
+        "                with open(os.path.join(folder, name), 'w') as handle:\n"
+        "                    handle.write('pwned')\n"
+        "            except OSError:\n"
+        "                pass\n" + CORRECT,
+        10,
+        "ok",
+    ),
+    "outlives_deadline": (
+        NAME + "import os, time\nimport numpy as np\n"
+        "def projection(p, q):\n"
+        "    try:\n"
+        "        if os.fork() == 0:\n"
+        "            _name(b'hx-outlives_dea')\n"
+        "            time.sleep(120)\n"
+        "            os._exit(0)\n"
+        "    except OSError:\n"
+        "        pass\n" + CORRECT,
+        10,
         "ok",
     ),
     "imitates_grader": (
@@ -138,34 +216,45 @@ BROKEN_FILES = {
 }
 
 
-def _snapshot(folder: Path, skip: tuple[str, ...]) -> dict[str, str]:
-    files = {}
-    for path in folder.rglob("*"):
-        relative = path.relative_to(folder)
-        if path.is_file() and not any(part in skip for part in relative.parts):
-            files[str(relative)] = hashlib.sha256(path.read_bytes()).hexdigest()
-    return files
+def _digests(paths) -> dict[str, str]:
+    return {str(path): hashlib.sha256(path.read_bytes()).hexdigest() for path in paths}
 
 
 @pytest.fixture(scope="module")
-def graded(tmp_path_factory):
+def graded(tmp_path_factory, processes):
+    probe = runner.probe(LIMITS)
+    if not probe.confined:
+        # Unconfined, these submissions would really overwrite the course's files.
+        pytest.skip(f"graded code cannot be confined here ({probe.sandbox}); the corpus is not run")
     submissions = tmp_path_factory.mktemp("hostile")
     out = tmp_path_factory.mktemp("graded")
     (out / "other").mkdir()
     (out / "other" / "results.json").write_text("{}")
+    other = Path(tempfile.mkdtemp(prefix="cagd-grade-victim-"))
+    (other / "results.json").write_text("{}")
+    DECOY.write_text("a file of the checkout no submission may change\n")
     solution = nbformat.read(SOLUTION, as_version=4)
     for name, (source, _, _) in HOSTILE.items():
         notebook = nbformat.from_dict(json.loads(json.dumps(solution)))
-        notebook.cells.append(nbformat.v4.new_code_cell(source.replace(OUT_MARKER, str(out))))
+        text = source.replace(OUT_MARKER, str(out)).replace(OTHER_FOLDER_MARKER, str(other))
+        notebook.cells.append(nbformat.v4.new_code_cell(text))
         nbformat.write(notebook, submissions / f"{name}.ipynb")
     for name, (text, _) in BROKEN_FILES.items():
         (submissions / f"{name}.ipynb").write_text(text)
-    skip = (".venv", "__pycache__", ".pytest_cache", "_build", ".git")
-    before = _snapshot(ROOT, skip)
-    grade_class([submissions], out, jobs=2, limits=LIMITS, seed=11, progress=False, chapters=[1])
+    targets = [HIDDEN_SUITE, DECOY, other / "results.json"]
+    before = _digests(targets)
+    try:
+        grade_class([submissions], out, jobs=2, limits=LIMITS, seed=11, progress=False, chapters=[1])
+        after = _digests(targets)
+        leftovers = {name: processes.named(f"hx-{name}") for name in HOSTILE}
+        leftovers["grader"] = processes.grading()
+        others = sorted(p.name for p in other.iterdir())
+    finally:
+        DECOY.unlink()
+        shutil.rmtree(other)
     with (out / "gradebook.csv").open() as handle:
         rows = {row["submission"]: row for row in csv.DictReader(handle)}
-    return rows, out, before, _snapshot(ROOT, skip)
+    return rows, out, before, after, leftovers, others
 
 
 @pytest.mark.parametrize("name", list(HOSTILE))
@@ -193,9 +282,32 @@ def test_every_submission_has_exactly_one_row_and_a_feedback_page(graded):
 
 
 def test_no_file_outside_the_output_folder_changed(graded):
-    _, out, before, after = graded
+    _, out, before, after, _, others = graded
     assert before == after
     assert (out / "other" / "results.json").read_text() == "{}"
+    assert others == ["results.json"]  # nothing added to another submission's folder either
+    book = (ROOT / "book.toml").read_text(encoding="utf-8")
+    assert "pwned" not in book and tomllib.loads(book)["chapters"]
+
+
+@pytest.mark.parametrize("name", list(HOSTILE))
+def test_no_process_a_submission_started_outlives_the_grading(graded, name):
+    *_, leftovers, _ = graded
+    assert leftovers[name] == []
+    assert leftovers["grader"] == []
+
+
+def test_reading_the_reference_by_path_scores_nothing_where_the_row_says_it_was_confined(graded):
+    rows, *_ = graded
+    row = rows["reads_reference_by_path"]
+    assert "landlock ABI" in row["confinement"] and row["01.projection"] == "0"
+
+
+def test_every_row_says_its_code_ran_confined(graded):
+    rows, *_ = graded
+    for name in HOSTILE:
+        assert "landlock ABI" in rows[name]["confinement"], rows[name]
+    assert all(rows[name]["confinement"] == "" for name in BROKEN_FILES)  # nothing of theirs ran
 
 
 def test_captured_output_is_truncated_not_lost(graded):
