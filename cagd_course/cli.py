@@ -5,6 +5,7 @@ from __future__ import annotations
 import argparse
 import os
 import sys
+from importlib.util import find_spec
 from pathlib import Path
 
 __all__ = ["main", "build_parser"]
@@ -59,6 +60,9 @@ def _cmd_check(args) -> int:
     for result in outcome.exercises:
         print(check_text(result, outcome.run.load_problems, submission.skipped), end="\n\n")
     print(f"Total: {outcome.score:g} / {outcome.max_score:g}")
+    if not outcome.run.confined:
+        # A self-check may run unconfined (a student's laptop); grading a class may not.
+        print(f"note: the checked code ran unconfined ({outcome.run.sandbox})", file=sys.stderr)
     return 0
 
 
@@ -71,23 +75,64 @@ def _cmd_validate(args) -> int:
 
 
 def _cmd_grade(args) -> int:
-    from .grading.classroom import grade_class
+    from .grading.classroom import UnconfinedError, grade_class
 
-    summary = grade_class(args.paths, args.out, args.jobs, _limits(args), args.seed, args.force, chapters=args.chapter)
+    try:
+        summary = grade_class(
+            args.paths,
+            args.out,
+            args.jobs,
+            _limits(args),
+            args.seed,
+            args.force,
+            chapters=args.chapter,
+            allow_unconfined=args.allow_unconfined,
+        )
+    except UnconfinedError as err:
+        print(f"cagd grade: {err}", file=sys.stderr)
+        return 2
     print(summary)
     print(f"gradebook: {Path(args.out) / 'gradebook.csv'}; feedback: {Path(args.out)}/<submission>/feedback.html")
     return 0
 
 
 def _cmd_book(args) -> int:
-    from .book import build_book
+    import time
 
-    pages = build_book(args.out, args.chapter or None, args.timeout)
+    from .book import BookError, build_book
+    from .manifest import load_course
+
+    if args.pdf:
+        from .book.browser import HOW_TO_GET_IT, chromium_executable
+
+        # Say so before executing the chapters, not after.
+        if chromium_executable() is None or find_spec("playwright") is None:
+            print(f"cagd book --pdf: printing needs Chromium and playwright: {HOW_TO_GET_IT}", file=sys.stderr)
+            return 2
+    started = time.monotonic()
+    out = args.out if args.out is not None else load_course().root / "_build" / "html"
+    try:
+        pages = build_book(out, args.chapter or None, args.timeout, frames=args.frames)
+    except BookError as err:
+        print(f"cagd book: {err}", file=sys.stderr)
+        return 1
     for page in pages:
-        state = f"FAILED: {page.error}" if page.error else (f"{page.seconds:.1f} s" if page.seconds else "converted")
-        print(f"  {page.file:45} {state}")
-    print(f"book written to {Path(args.out) / 'index.html'}")
-    return 1 if any(page.error for page in pages) else 0
+        print(f"  {page.file:45} {page.state}")
+    failed = [page for page in pages if page.error]
+    print(f"book written to {out / 'index.html'} in {time.monotonic() - started:.0f} s")
+    if args.pdf and not failed:
+        from .book.pdf import PdfError, print_pdf
+
+        try:
+            pdf = print_pdf(out, pages)
+        except PdfError as err:
+            print(f"cagd book --pdf: {err}", file=sys.stderr)
+            return 1
+        print(f"PDF written to {pdf}")
+    print(f"read it offline: open {out / 'index.html'}, or serve it: python -m http.server -d {out}")
+    for page in failed:
+        print(f"cagd book: {page.error}", file=sys.stderr)
+    return 1 if failed else 0
 
 
 def _add_limits(parser: argparse.ArgumentParser) -> None:
@@ -135,6 +180,12 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("paths", nargs="+", type=Path, metavar="PATH", help="notebooks or folders of notebooks")
     p.add_argument("--out", type=Path, required=True, help="output folder (gradebook.csv, <submission>/...)")
     p.add_argument("--jobs", type=int, default=1, help="submissions graded in parallel (default 1)")
+    p.add_argument(
+        "--allow-unconfined",
+        action="store_true",
+        help="grade even where graded code cannot be confined (it could then read the reference and the hidden "
+        "suites and write your files); without it such grading is refused",
+    )
     p.add_argument("--force", action="store_true", help="regrade submissions already in the gradebook")
     p.add_argument(
         "--chapter",
@@ -146,10 +197,21 @@ def build_parser() -> argparse.ArgumentParser:
     _add_limits(p)
     p.set_defaults(run=_cmd_grade)
 
-    p = sub.add_parser("book", help="execute every chapter and write the HTML book")
-    p.add_argument("--out", type=Path, default=Path("_build/html"), help="output folder (default _build/html)")
+    p = sub.add_parser("book", help="execute every chapter and write the HTML book (and with --pdf, a PDF of it)")
+    p.add_argument(
+        "--out", type=Path, default=None, help="output folder (default: _build/html in the course folder)"
+    )
     p.add_argument("--chapter", type=int, action="append", metavar="N", help="only chapter N (repeatable)")
     p.add_argument("--timeout", type=int, default=300, help="seconds allowed per notebook cell (default 300)")
+    p.add_argument(
+        "--frames",
+        type=int,
+        default=21,
+        help="frames of each explorer's main slider in the book (default 21; 0: a still picture)",
+    )
+    p.add_argument(
+        "--pdf", action="store_true", help="also print the whole book to OUT/cagd-course.pdf (headless Chromium)"
+    )
     p.set_defaults(run=_cmd_book)
     return parser
 

@@ -9,6 +9,13 @@ explorer works without a browser. The figure is a `matplotlib.figure.Figure`
 (no pyplot, so nothing is displayed twice) rendered to PNG by the Agg canvas
 into an `ipywidgets.Image`, or shown as an ipympl canvas when points can be
 dragged with the mouse.
+
+A static page has no kernel, so a widget cannot change its picture there. When
+the environment variable CAGD_STATIC_FRAMES holds a number N (the book build
+sets it for the kernels it starts), the display bundle also carries a
+self-contained HTML figure: the main slider swept over N precomputed frames,
+with a slider and a play button that work in any browser. The book chooses
+that representation and JupyterLab the live widget, from the same output.
 """
 
 from __future__ import annotations
@@ -26,6 +33,8 @@ from matplotlib.transforms import Bbox
 from traitlets import TraitError
 
 from cagd_ref._validation import as_points
+
+from . import _static
 
 __all__ = ["Explorer"]
 
@@ -76,6 +85,33 @@ def _fmt(vector) -> str:
     return "(" + ", ".join(f"{v:.4g}" for v in np.ravel(vector)) + ")"
 
 
+def bare_axes(ax) -> None:
+    """Drop ticks and axis labels: a polygon's coordinates say little, and tick labels cost most in a redraw."""
+    ax.set(xticks=[], yticks=[], xlabel="", ylabel="")
+
+
+class TwoPanels:
+    """Mixin: a second axes (self.lower) under the explorer's main one, cleared with it on every redraw."""
+
+    figsize = (6.5, 6.4)
+
+    def lower_axes(self):
+        if getattr(self, "lower", None) is None:
+            self.ax.set_position([0.08, 0.40, 0.9, 0.52])
+            self.lower = self.figure.add_axes([0.08, 0.07, 0.9, 0.25])
+        return self.lower
+
+    def _clear(self) -> None:
+        super()._clear()
+        if getattr(self, "lower", None) is not None:
+            # Explorer._clear empties self.ax; point it at the lower axes for a moment to reuse that logic.
+            main, self.ax = self.ax, self.lower
+            try:
+                super()._clear()
+            finally:
+                self.ax = main
+
+
 class Explorer:
     """Shared machinery: named controls -> `compute` -> `draw` -> PNG (or ipympl canvas) plus a text readout.
 
@@ -86,6 +122,8 @@ class Explorer:
 
     figsize = (6.0, 4.5)
     dpi = 100
+    # The control the static figure sweeps; None means the first slider (else the first control).
+    static_control: str | None = None
 
     def __init__(self, controls: dict, projection: str | None = None, interactive_canvas: bool = False):
         self.controls = dict(controls)
@@ -110,12 +148,31 @@ class Explorer:
         self.state: dict = {}
         self.update()
 
-    # The notebook shows the explorer as its widget; the PNG rides along for static renderers.
+    # The notebook shows the explorer as its widget; the PNG rides along for static renderers, and for the
+    # book (CAGD_STATIC_FRAMES set) an HTML figure whose main slider works without a kernel.
     def _repr_mimebundle_(self, **kwargs):
         bundle = self.widget._repr_mimebundle_(**kwargs)
         bundle = dict(bundle[0] if isinstance(bundle, tuple) else bundle)
         bundle["image/png"] = self.png()
+        frames = _static.frame_count()
+        if frames:
+            bundle["text/html"] = self.static_html(frames)
         return bundle
+
+    def main_control(self) -> str:
+        """The name of the control the static figure sweeps: `static_control`, else the first slider."""
+        if self.static_control is not None:
+            return self.static_control
+        sliders = [name for name, control in self.controls.items() if hasattr(control, "min")]
+        return (sliders or list(self.controls))[0]
+
+    def static_frames(self, count: int = 21) -> tuple[str, list[dict], int]:
+        """Sweep the main control over about `count` values: (its name, frames, index of the current value)."""
+        return _static.frames(self, count)
+
+    def static_html(self, count: int = 21) -> str:
+        """A self-contained HTML figure of the main control's sweep, with a slider and a play button."""
+        return _static.html_figure(self, count)
 
     @property
     def values(self) -> dict:

@@ -41,7 +41,7 @@ from ..plotting.bsplines import (
     triangle_labels,
 )
 from ..plotting.curves import plot_control_polygon
-from ._base import Explorer, _control_points, _fmt, _slider
+from ._base import Explorer, TwoPanels, _control_points, _fmt, _slider, bare_axes
 
 __all__ = [
     "splitting_construction",
@@ -69,34 +69,7 @@ BASIS_SAMPLES = 301
 SAME_CURVE_TOL = 1e-9
 
 
-def _bare(ax) -> None:
-    """Drop ticks and axis labels: a polygon's coordinates say nothing, and tick labels cost most in a redraw."""
-    ax.set(xticks=[], yticks=[], xlabel="", ylabel="")
-
-
 # ---------------------------------------------------------------- knot vector editor
-
-
-class _TwoPanels:
-    """Mixin: a second axes (self.lower) under the explorer's main one, cleared with it on every redraw."""
-
-    figsize = (6.5, 6.4)
-
-    def lower_axes(self):
-        if getattr(self, "lower", None) is None:
-            self.ax.set_position([0.08, 0.40, 0.9, 0.52])
-            self.lower = self.figure.add_axes([0.08, 0.07, 0.9, 0.25])
-        return self.lower
-
-    def _clear(self) -> None:
-        super()._clear()
-        if getattr(self, "lower", None) is not None:
-            # Explorer._clear empties self.ax; point it at the lower axes for a moment to reuse that logic.
-            main, self.ax = self.ax, self.lower
-            try:
-                super()._clear()
-            finally:
-                self.ax = main
 
 
 def _merge_knots(values: list[float], multiplicity: int) -> list[float]:
@@ -110,7 +83,7 @@ def _merge_knots(values: list[float], multiplicity: int) -> list[float]:
     return sorted(merged)
 
 
-class KnotVectorEditor(_TwoPanels, Explorer):
+class KnotVectorEditor(TwoPanels, Explorer):
     """Interior knots on sliders and a multiplicity: curve, Bézier segments, basis functions. Notes §6.2-6.4, §6.14."""
 
     def __init__(self, points=None, degree: int = 3):
@@ -176,7 +149,7 @@ class KnotVectorEditor(_TwoPanels, Explorer):
         lower.set_ylim(0, 1.15)
         lower.set_yticks([0, 1])
         lower.set_xlabel(f"t   (basis functions $B_0$ ... $B_{{{len(self.points) - 1}}}$, left to right)", fontsize=8)
-        _bare(ax)
+        bare_axes(ax)
 
     def describe(self, state: dict) -> str:
         joints = ", ".join(f"t={knot_label(v)}: C<sup>{k}</sup>" for v, k in zip(state["joints"], state["continuity"]))
@@ -248,7 +221,7 @@ class DeBoorExplorer(Explorer):
         span = f"[{knot_label(self.knots[j])}, {knot_label(self.knots[j + 1])}]"
         ax.set_title(f"de Boor at t = {state['t']:.2f}, span {span}", fontsize=10)
         ax.legend(fontsize=7, loc="lower center", ncol=3)
-        _bare(ax)
+        bare_axes(ax)
 
     def describe(self, state: dict) -> str:
         return f"P({state['t']:.2f}) = {_fmt(state['point'])}"
@@ -322,7 +295,7 @@ class KnotInsertionExplorer(Explorer):
         ax.set_title(f"inserting t = {state['t']:.2f} {state['inserted']}×; curve moved by {state['deviation']:.1e}",
                      fontsize=10)
         ax.legend(fontsize=7, loc="lower center", ncol=2)
-        _bare(ax)
+        bare_axes(ax)
 
     def describe(self, state: dict) -> str:
         knots = ", ".join(knot_label(k) for k in state["knots"])
@@ -422,7 +395,7 @@ class KnotIntervalExplorer(Explorer):
         ax.set_title(f"split $d_{state['index']}$ = {knot_label(d)} into {knot_label(state['fraction'] * d)} + "
                      f"{knot_label((1 - state['fraction']) * d)}", fontsize=10)
         ax.legend(fontsize=7, loc="upper right")
-        _bare(ax)
+        bare_axes(ax)
 
     def describe(self, state: dict) -> str:
         values = ", ".join(knot_label(v) for v in state["intervals"])
@@ -496,7 +469,7 @@ class LocalControlExplorer(Explorer):
         ax.set_title(f"moving $P_{{{state['index']}}}$ changes {len(state['changed'])} of {len(self.segments)} "
                      f"segments, t in [{knot_label(a)}, {knot_label(b)}]", fontsize=10)
         ax.legend(fontsize=7, loc="lower center", ncol=3)
-        _bare(ax)
+        bare_axes(ax)
 
     def describe(self, state: dict) -> str:
         spans = ", ".join(f"[{knot_label(a)}, {knot_label(b)}]" for a, b in self.intervals[state["changed"]])

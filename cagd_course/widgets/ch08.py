@@ -19,8 +19,7 @@ from cagd_ref.polynomials import bernstein_horner
 
 from ..plotting.curves import bezier_samples, plot_bezier, plot_control_polygon
 from ..plotting.offsets import draw_cusp_condition, draw_offset, offset_samples, plot_osculating_circle
-from ._base import Explorer, _control_points, _fmt, _slider
-from .ch06 import _TwoPanels
+from ._base import Explorer, TwoPanels, _control_points, _fmt, _slider, bare_axes
 
 __all__ = [
     "offset_explorer",
@@ -57,14 +56,10 @@ def _radius(value) -> str:
     return ("-∞" if value < 0 else "∞") if np.isinf(value) else f"{value:.4g}"
 
 
-def _bare(ax) -> None:
-    ax.set(xticks=[], yticks=[], xlabel="", ylabel="")
-
-
 # ---------------------------------------------------------------- offsets and cusps
 
 
-class OffsetExplorer(_TwoPanels, Explorer):
+class OffsetExplorer(TwoPanels, Explorer):
     """An offset with its cusps and backward arc, the tightest bend's circle, 1 + ρκ below. Notes §8, Figs. 8.1-8.2."""
 
     def __init__(self, points=None, rho: float = 2.0):
@@ -106,7 +101,7 @@ class OffsetExplorer(_TwoPanels, Explorer):
         count = len(state["cusps"])
         ax.set_title(f"offset at ρ = {rho:.2f}: {count} cusp{'s' if count != 1 else ''}", fontsize=10)
         ax.legend(fontsize=7, loc="upper right")
-        _bare(ax)
+        bare_axes(ax)
         lower = self.lower_axes()
         draw_cusp_condition(lower, state["ts"], state["factor"], state["cusps"])
         lower.set_xticks([0, 0.5, 1])
@@ -139,7 +134,7 @@ def offset_explorer(points=None, rho: float = 2.0) -> OffsetExplorer:
 # ---------------------------------------------------------------- PH curves
 
 
-class PHOffsetExplorer(_TwoPanels, Explorer):
+class PHOffsetExplorer(TwoPanels, Explorer):
     """A PH cubic from u and v, its exact rational offset over the sampled one, and σ(t) = |Q'(t)| below. Notes §8."""
 
     def __init__(self, u=(2.0, 1.0), v=(0.0, 1.0), rho: float = 0.25):
@@ -189,7 +184,7 @@ class PHOffsetExplorer(_TwoPanels, Explorer):
         ax.set_title(f"ρ = {state['rho']:.2f}: rational quintic vs Q + ρN, largest gap {state['deviation']:.1e}",
                      fontsize=10)
         ax.legend(fontsize=7, loc="lower right")
-        _bare(ax)
+        bare_axes(ax)
         lower = self.lower_axes()
         lower.plot(state["ts"], bernstein_horner(state["sigma"], state["ts"]), color="C2", label="σ(t) = u² + v²")
         lower.plot(state["ts"][::10], state["speed"][::10], "o", color="black", markersize=3, label="|Q'(t)|")
@@ -293,7 +288,7 @@ class GougingExplorer(Explorer):
         ax.set_title(f"tool radius {abs(rho):.2f}: {titles[state['kind']]}", fontsize=10)
         ax.legend(fontsize=7, loc="upper right")
         ax.autoscale_view()
-        _bare(ax)
+        bare_axes(ax)
 
     def describe(self, state: dict) -> str:
         lines = [f"deepest gouge {state['depth']:.3g}"]

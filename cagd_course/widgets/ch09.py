@@ -29,8 +29,7 @@ from cagd_ref.roots import (
 from ..plotting._style import finish_planar
 from ..plotting.curves import plot_bezier, plot_control_polygon
 from ..plotting.roots import mark_roots, plot_conditioning, plot_explicit, plot_march_step, plot_root_errors
-from ._base import Explorer, _slider
-from .ch06 import _TwoPanels
+from ._base import Explorer, TwoPanels, _slider
 
 __all__ = [
     "hull_march_explorer",
@@ -160,7 +159,7 @@ def _wilkinson_run(degree: int) -> dict:
     return {"exact": exact, "found": found, "errors": {name: root_errors(f, exact) for name, f in found.items()}}
 
 
-class ConditioningExplorer(_TwoPanels, Explorer):
+class ConditioningExplorer(TwoPanels, Explorer):
     """Wilkinson-type roots k/(n+1) from either basis: each root's error, and the largest for every n. Notes ch. 9."""
 
     def __init__(self, degree: int = 20):
@@ -213,7 +212,7 @@ def conditioning_explorer(degree: int = 20) -> ConditioningExplorer:
 # ---------------------------------------------------------------- line ∩ rational curve
 
 
-class LineCurveExplorer(_TwoPanels, Explorer):
+class LineCurveExplorer(TwoPanels, Explorer):
     """A line swept across a rational curve; below, f(t) = Σ w_i (a x_i + b y_i + c) B_i^n and its roots. Notes §9.4."""
 
     def __init__(self, points=None, weights=None):

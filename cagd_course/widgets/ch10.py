@@ -45,9 +45,8 @@ from ..plotting.interpolation import (
     plot_neville,
     plot_node_polynomial,
 )
-from ._base import Explorer, _control_points, _fmt, _slider, _swatch
+from ._base import Explorer, TwoPanels, _control_points, _fmt, _slider, _swatch
 from .ch02 import ControlPointEditor
-from .ch06 import _TwoPanels
 
 __all__ = [
     "interpolation_explorer",
@@ -109,7 +108,7 @@ def _chord_length_parameters(points) -> np.ndarray:
     return steps / steps[-1]
 
 
-class InterpolationExplorer(_TwoPanels, ControlPointEditor, _ExtraControls):
+class InterpolationExplorer(TwoPanels, ControlPointEditor, _ExtraControls):
     """Data points and their parameters -> the interpolant, its Bézier polygon, its Lagrange basis. Notes §10.1-10.2."""
 
     figsize = (6.5, 7.0)
@@ -254,7 +253,7 @@ FUNCTIONS = {
 LOWER_PANELS = ["ω(x) = Π(x - xᵢ)", "Lagrange basis", "error f - p"]
 
 
-class RungeExplorer(_TwoPanels, Explorer):
+class RungeExplorer(TwoPanels, Explorer):
     """A function interpolated at N uniform or Chebyshev nodes on [-1, 1]; ω, basis or error below. Notes §10.6."""
 
     figsize = (6.5, 6.6)
@@ -425,7 +424,7 @@ def _fewest_chords(points, tol: float, upper: int) -> int:
     return high
 
 
-class FlatteningExplorer(_TwoPanels, Explorer):
+class FlatteningExplorer(TwoPanels, Explorer):
     """A tolerance -> the chords the second-difference bound asks for, the bound and the measured gap. Notes §10.6."""
 
     figsize = (6.5, 6.2)

@@ -40,8 +40,7 @@ from ..plotting.fitting import (
     plot_residuals,
     plot_samples,
 )
-from ._base import Explorer, _slider, _swatch
-from .ch06 import _TwoPanels
+from ._base import Explorer, TwoPanels, _slider, _swatch, bare_axes
 
 __all__ = [
     "FIT_SHAPES",
@@ -96,11 +95,6 @@ def sample_shape(shape: str, count: int, unevenness: float = 0.0, noise: float =
         r = 1 + theta / np.pi
         points = np.column_stack([r * np.cos(theta), r * np.sin(theta)])
     return points + sigma * rng.normal(size=points.shape)
-
-
-def _bare(ax) -> None:
-    """No tick labels on the picture of the curve: its coordinates say little, and tick labels cost most of a redraw."""
-    ax.set(xticks=[], yticks=[], xlabel="", ylabel="")
 
 
 def _course_arc(points):
@@ -160,7 +154,7 @@ def best_constant_explorer(values=None) -> BestConstantExplorer:
 # ---------------------------------------------------------------- fitting lab
 
 
-class FittingExplorer(_TwoPanels, Explorer):
+class FittingExplorer(TwoPanels, Explorer):
     """Fit a cubic to noisy samples: parameters, knots, control points, fairing; residuals, curvature. Notes §11.3."""
 
     def __init__(self, shape: str = "half ellipse"):
@@ -207,7 +201,7 @@ class FittingExplorer(_TwoPanels, Explorer):
         fairing = f", weight {state['weight']:.2g}" if state["weight"] else ""
         ax.set_title(f"{len(state['control'])} control points, {self.values['parametrization']} parameters{fairing}",
                      fontsize=10)
-        _bare(ax)
+        bare_axes(ax)
         lower = self.lower_axes()
         lower.plot(state["ts"], state["curvature"], color="C2", linewidth=1.3, label="curvature κ(s)")
         scale = np.abs(state["curvature"]).max() / max(state["residuals"].max(), 1e-12)
@@ -246,7 +240,7 @@ def fitting_explorer(shape: str = "half ellipse") -> FittingExplorer:
 # ---------------------------------------------------------------- the fairing weight
 
 
-class FairingWeightExplorer(_TwoPanels, Explorer):
+class FairingWeightExplorer(TwoPanels, Explorer):
     """Faired fits of one data set for growing weights: they shrink towards the least-squares line. Notes §11.4."""
 
     family = tuple(10.0 ** k for k in range(-6, 3))
@@ -309,7 +303,7 @@ class FairingWeightExplorer(_TwoPanels, Explorer):
             ax.plot(*self.points[state["targets"]].T, "o", color="C3", markersize=9, markerfacecolor="none",
                     markeredgewidth=2, label="interpolated")
         ax.set_title(f"faired fits for weights 1e-6 ... 1e2 (grey); height {state['height']:.3g}", fontsize=10)
-        _bare(ax)
+        bare_axes(ax)
         lower = self.lower_axes()
         # Logarithms on linear axes: log-scale tick labels would cost more than the rest of the drawing.
         lower.plot(np.log10(state["curve_lsq"]), np.log10(state["curve_energy"]), color="0.4", linewidth=1.2)
@@ -386,7 +380,7 @@ class BoxFitExplorer(Explorer):
         plot_fit(ax, state["control"], state["knots"], label="fairest within the boxes")
         ax.set_title(f"bending energy {state['energy_lsq']:.4g} (least squares) → {state['energy']:.4g}; "
                      f"{len(state['active'])} boxes touched", fontsize=10)
-        _bare(ax)
+        bare_axes(ax)
 
     def describe(self, state: dict) -> str:
         key = (f"{_swatch('k')} fairest curve within the boxes &nbsp; {_swatch('0.6')} least squares &nbsp; "

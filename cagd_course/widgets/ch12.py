@@ -21,8 +21,7 @@ from cagd_ref import bezier
 from cagd_ref import interval_bezier as ib
 
 from ..plotting.intervals import box_patch, plot_boxes, plot_corner_curves, plot_interval_band, plot_swept_region
-from ._base import Explorer, _fmt, _slider
-from .ch06 import _TwoPanels
+from ._base import Explorer, TwoPanels, _fmt, _slider
 
 __all__ = [
     "interval_curve_explorer",
@@ -168,7 +167,7 @@ def hermite_pieces(function: str, order: int, depth: int) -> list[tuple[float, f
     return pieces
 
 
-class HermiteIntervalExplorer(_TwoPanels, Explorer):
+class HermiteIntervalExplorer(TwoPanels, Explorer):
     """Enclosing a function by Hermite interval polynomials: the band, and the bound against the true error. §12.3."""
 
     def __init__(self, function: str = "exp(t)", order: int = 2, depth: int = 0):
@@ -248,7 +247,7 @@ def enclosure_quality(points: np.ndarray, depth: int, samples: int = 65) -> dict
     return {"pieces": pieces, "bound": bound, "deviation": deviation}
 
 
-class DegreeReductionExplorer(_TwoPanels, Explorer):
+class DegreeReductionExplorer(TwoPanels, Explorer):
     """A curve enclosed in quartic interval pieces; the bound and the true deviation against the depth. §12.3."""
 
     def __init__(self, curve: str = "wave (degree 7)", depth: int = 1):

@@ -32,8 +32,7 @@ from ..plotting.deformation import (
     plot_isoline_construction,
     plot_lattice,
 )
-from ._base import Explorer, _slider, _want_ipympl
-from .ch06 import _TwoPanels
+from ._base import Explorer, TwoPanels, _slider, _want_ipympl
 
 __all__ = [
     "lattice_editor",
@@ -338,7 +337,7 @@ def bent_lattice(strength: float) -> np.ndarray:
     return lattice
 
 
-class FreezeExplorer(_TwoPanels, Explorer):
+class FreezeExplorer(TwoPanels, Explorer):
     """A line crossing the bottom edge, deformed with 0-3 rows frozen; its curvature below. Notes §14, Fig. 14.5."""
 
     static_control = "order"

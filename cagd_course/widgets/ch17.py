@@ -26,8 +26,7 @@ from ..plotting.implicit_curves import (
     plot_polynomials,
     plot_sign_regions,
 )
-from ._base import Explorer, _fmt, _slider
-from .ch06 import _TwoPanels
+from ._base import Explorer, TwoPanels, _fmt, _slider
 
 __all__ = [
     "implicit_curve_explorer",
@@ -229,7 +228,7 @@ def common_root_explorer(f_roots=(1.0, 2.0, 3.0), g_roots=(1.0, 2.0, -1.0), g_le
 # ---------------------------------------------------------------- intersection by implicitization
 
 
-class ImplicitIntersectionExplorer(_TwoPanels, Explorer):
+class ImplicitIntersectionExplorer(TwoPanels, Explorer):
     """Two rational cubics, their intersections numbered by t, and g(u) = f_P(Q(u)) with its roots. Notes §17.8."""
 
     def __init__(self, w1: float = 2.0, w2: float = 2.0, dx: float = 0.0, dy: float = 0.0):

@@ -22,7 +22,7 @@ from cagd_ref.geometry import conic_type
 from ..plotting.algebraic import plot_implicit
 from ..plotting.curves import bezier_samples, plot_control_polygon
 from ..plotting.pencils import AXIS_STYLE, plot_line, plot_lines, plot_parameter_line, plot_pencil, plot_points, set_box
-from ._base import Explorer, _fmt, _slider
+from ._base import Explorer, _fmt, _slider, bare_axes
 
 __all__ = [
     "pencil_explorer",
@@ -38,10 +38,6 @@ __all__ = [
 T = {"min": 0.0, "max": 1.0, "step": 0.01, "readout_format": ".2f"}
 ANGLE = {"min": -180.0, "max": 180.0, "step": 1.0, "readout_format": ".0f"}
 ELEVEN = np.linspace(0.0, 1.0, 11)
-
-
-def _bare(ax) -> None:
-    ax.set(xticks=[], yticks=[], xlabel="", ylabel="")
 
 
 def _through(point, normal_degrees: float, size: float = 1.0) -> np.ndarray:
@@ -107,7 +103,7 @@ class PencilExplorer(Explorer):
         ax.plot(0.0, 0.0, **AXIS_STYLE, label="axis A")
         ax.legend(fontsize=7, loc="lower left")
         ax.set_title("a pencil passes through the marks of its parameter line", fontsize=10)
-        _bare(ax)
+        bare_axes(ax)
 
     def describe(self, state: dict) -> str:
         sense = "counterclockwise (a0 b1 &gt; a1 b0)" if state["counterclockwise"] else "clockwise (a0 b1 &lt; a1 b0)"
@@ -195,7 +191,7 @@ class TwoPencilsExplorer(Explorer):
         set_box(ax, *box)
         ax.legend(fontsize=7, loc="upper left")
         ax.set_title(f"two pencils meet at P({state['t']:.2f}) on a conic", fontsize=10)
-        _bare(ax)
+        bare_axes(ax)
 
     def describe(self, state: dict) -> str:
         c = state["implicit"]
@@ -393,7 +389,7 @@ class TangentExplorer(Explorer):
         set_box(ax, *box)
         ax.legend(fontsize=7, loc="lower left")
         ax.set_title("tangent lines envelop the curve", fontsize=10)
-        _bare(ax)
+        bare_axes(ax)
         dual = self.dual_axes()
         dual_box = ((-4.0, 4.0), (-4.0, 4.0))
         dual.plot(*state["reciprocal"].T, color="C2", linewidth=2.2, label="reciprocal curve B = Point(P × P')")
@@ -404,7 +400,7 @@ class TangentExplorer(Explorer):
         set_box(dual, *dual_box)
         dual.legend(fontsize=7, loc="lower left")
         dual.set_title("the dual picture: Line(A(t)) touches B at B(t)", fontsize=10)
-        _bare(dual)
+        bare_axes(dual)
 
     def describe(self, state: dict) -> str:
         where = "at infinity" if state["dual_point"] is None else _fmt(state["dual_point"])

@@ -20,8 +20,7 @@ from cagd_ref import bezier, hybrid
 
 from ..plotting.curves import plot_bezier, plot_control_polygon
 from ..plotting.hybrid import piece_curves, plot_hybrid, plot_moving_boxes, shade_area
-from ._base import Explorer, _control_points, _slider
-from .ch06 import _TwoPanels
+from ._base import Explorer, TwoPanels, _control_points, _slider
 
 __all__ = [
     "hybrid_explorer",
@@ -127,7 +126,7 @@ def hybrid_explorer(points=None, weights=None, degree: int = 4, t: float = 0.3) 
 # ---------------------------------------------------------------- subdivision shrinks the box
 
 
-class MovingBoxExplorer(_TwoPanels, Explorer):
+class MovingBoxExplorer(TwoPanels, Explorer):
     """The pieces of a split rational curve with their moving points' boxes; below, ‖Δ‖ against depth. Fig. 20.2."""
 
     static_control = "depth"
@@ -198,7 +197,7 @@ def _timed(function, *args, **kwargs):
     return result, time.perf_counter() - start
 
 
-class AdaptiveAreaExplorer(_TwoPanels, Explorer):
+class AdaptiveAreaExplorer(TwoPanels, Explorer):
     """The area under a rational curve to a tolerance: the pieces used, bound and true error, against Simpson. §20.4."""
 
     static_control = "tol"

@@ -27,9 +27,8 @@ from ..plotting.quads import (
     plot_quad,
     plot_warped,
 )
-from ._base import _fmt, _slider
+from ._base import TwoPanels, _fmt, _slider
 from .ch02 import ControlPointEditor
-from .ch06 import _TwoPanels
 from .ch10 import _ExtraControls
 
 __all__ = [
@@ -78,7 +77,7 @@ def _square(ax) -> None:
 # ---------------------------------------------------------------- the bilinear map and its two pre-images
 
 
-class QuadExplorer(_TwoPanels, ControlPointEditor, _ExtraControls):
+class QuadExplorer(TwoPanels, ControlPointEditor, _ExtraControls):
     """Four corners and a point E: the bilinear iso-lines, E's pre-images below, the fold. Notes §21, Fig. 21.1."""
 
     figsize = (6.5, 7.4)

@@ -26,6 +26,7 @@ from benchmarks import peers  # noqa: E402
 from benchmarks import run as bench  # noqa: E402
 from benchmarks.common import compare, quick_plan  # noqa: E402
 from benchmarks.rootfinding import root_error, wilkinson  # noqa: E402
+from benchmarks.topics import TOPICS, topic  # noqa: E402
 
 PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
 
@@ -76,7 +77,11 @@ def test_one_run_writes_the_report_and_the_figure(tiny_run):
         assert heading in text
     assert "benchmarks.png" in text
     assert tiny_run["figure"].read_bytes()[:8] == PNG_SIGNATURE
-    assert len(tiny_run["verdicts"]) == 6
+    # The six core targets, the roots speed, and each chapter topic's own (with its section in the report).
+    assert len(tiny_run["verdicts"]) >= 7 + len(TOPICS)
+    for section in TOPICS:
+        assert f"## {topic(section).TITLE}" in text
+        assert tiny_run["results"][section], section
 
 
 def test_every_ratio_is_finite_and_every_library_agrees_with_ours(tiny_run):

@@ -60,12 +60,7 @@ def test_bad_arguments_exit_with_usage(argv):
     assert info.value.code == 2
 
 
-def test_book_builds_a_chapter_with_its_widgets_and_a_table_of_contents(tmp_path, capsys):
-    assert main(["book", "--out", str(tmp_path), "--chapter", "1"]) == 0
-    index = (tmp_path / "index.html").read_text()
-    assert "01-introduction.html" in index and "exercises-01-introduction.html" in index
-    page = (tmp_path / "01-introduction.html").read_text()
-    assert "application/vnd.jupyter.widget-state+json" in page and "<img" in page
+# The book (`cagd book`) is tested in test_book.py, on a course of its own, and in a browser in tests/browser/.
 
 
 @pytest.fixture

@@ -1,0 +1,152 @@
+"""The built book as a reader opens it: from file://, with no network, in headless Chromium.
+
+The whole course is built once (into a temporary folder, with the execution cache of `./course build`, so a
+built course makes this quick), then every page is opened with every request outside the book folder blocked.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+
+from cagd_course.book import build_book
+from cagd_course.book.browser import keep_inside, wait_until_typeset
+from cagd_course.book.pdf import print_pdf
+from cagd_course.manifest import load_course
+
+expect = pytest.importorskip("playwright.sync_api").expect
+# Sphinx 9 warns about its own API in the book theme and MyST; nothing the course can change.
+pytestmark = pytest.mark.filterwarnings("ignore:.*Check CHANGES for Sphinx API modifications")
+
+COURSE = load_course(Path(__file__).resolve().parents[2])
+CHAPTER_2 = next(c for c in COURSE.chapters if c.number == 2)
+
+# Text nodes of the page body outside code, scripts and typeset math: where raw TeX delimiters would show.
+RAW_TEX = """() => {
+  const skip = "PRE, CODE, SCRIPT, STYLE, TEXTAREA, MJX-CONTAINER";
+  const walker = document.createTreeWalker(document.querySelector("main") || document.body, NodeFilter.SHOW_TEXT);
+  const found = [];
+  while (walker.nextNode()) {
+    const node = walker.currentNode;
+    if (node.parentElement.closest(skip)) continue;
+    if (/\\$|\\\\\\(|\\\\\\[/.test(node.textContent)) found.push(node.textContent.trim().slice(0, 80));
+  }
+  return found;
+}"""
+
+
+@pytest.fixture(scope="module")
+def built(tmp_path_factory) -> tuple[Path, list]:
+    """The whole course built into a temporary folder: (the folder, the pages `build_book` reports)."""
+    out = tmp_path_factory.mktemp("book") / "html"
+    pages = build_book(out, progress=False)
+    assert not [p.error for p in pages if p.error]
+    return out, pages
+
+
+@pytest.fixture(scope="module")
+def book(built) -> Path:
+    return built[0]
+
+
+def _open(page, book: Path, relative: str) -> list[str]:
+    """Open a page of the book with everything outside the book folder blocked; the blocked URLs."""
+    outside = keep_inside(page, book)
+    page.goto((book / relative).as_uri())
+    wait_until_typeset(page)
+    return outside
+
+
+def _doc(path: Path) -> str:
+    return path.relative_to(COURSE.root).with_suffix(".html").as_posix()
+
+
+def test_every_page_loads_offline_and_requests_nothing_outside_the_book(book, page):
+    failed = []
+    page.on("requestfailed", lambda request: failed.append(request.url))
+    outside = keep_inside(page, book)
+    pages = ["index.html", "search.html", "genindex.html"]
+    pages += [_doc(p) for c in COURSE.chapters for p in (c.notebook, c.exercises) if p is not None]
+    for relative in pages:
+        response = page.goto((book / relative).as_uri())
+        assert response is None or response.ok, relative
+        wait_until_typeset(page)
+        assert page.locator("main h1").count() >= 1, relative
+    assert outside == []
+    assert failed == []
+    assert page.errors == []
+
+
+def test_math_of_chapter_2_is_typeset_and_no_raw_delimiter_is_left(book, page):
+    assert _open(page, book, _doc(CHAPTER_2.notebook)) == []
+    assert page.locator("mjx-container").count() > 100
+    # MathJax put its fonts in from the book folder too: the formulas are drawn, not empty boxes.
+    assert page.evaluate("() => document.querySelector('mjx-container').getBoundingClientRect().width") > 0
+    assert page.evaluate(RAW_TEX) == []
+
+
+def test_the_sidebar_lists_every_chapter_and_exercise_notebook_of_book_toml(book, page):
+    _open(page, book, "index.html")
+    links = page.locator("nav.bd-docs-nav a").evaluate_all("links => links.map(a => a.href)")
+    for chapter in COURSE.chapters:
+        for path in (chapter.notebook, chapter.exercises):
+            if path is not None:
+                assert any(link.endswith(_doc(path)) for link in links), path
+    _open(page, book, _doc(CHAPTER_2.notebook))
+    assert page.locator("nav.bd-docs-nav a").count() == len(links)
+    # Previous / next, the page's own contents, the notebook download and the box that says how to run it.
+    assert page.locator("a.left-prev").count() == 1 and page.locator("a.right-next").count() == 1
+    assert page.locator("nav.page-toc a").count() > 10
+    download = page.locator("a[href$='_sources/chapters/02-bezier-curves.ipynb']")
+    assert download.count() == 1
+    assert (book / "_sources" / "chapters" / "02-bezier-curves.ipynb").is_file()
+    box = page.locator(".cagd-run-box")
+    assert "./course lab" in box.inner_text() and "chapters/02-bezier-curves.ipynb" in box.inner_text()
+
+
+def test_search_for_de_casteljau_finds_chapter_2(book, page):
+    outside = keep_inside(page, book)
+    page.goto((book / "search.html").as_uri() + "?q=de+Casteljau")
+    page.wait_for_selector("#search-results ul.search li a", timeout=30_000)
+    hits = page.locator("#search-results ul.search li a").evaluate_all("links => links.map(a => a.href)")
+    assert any(_doc(CHAPTER_2.notebook) in hit for hit in hits)
+    assert outside == []
+
+
+def test_moving_a_static_slider_shows_another_frame(book, page, artefacts):
+    _open(page, book, _doc(CHAPTER_2.notebook))
+    figure = page.locator(".cagd-static-explorer:has(img[alt^='de Casteljau'])").first
+    figure.scroll_into_view_if_needed()
+    image, readout = figure.locator("img.cagd-sx-frame"), figure.locator(".cagd-sx-readout")
+    before, readout_before = image.get_attribute("src"), readout.inner_text()
+    figure.locator("input[type=range]").focus()
+    page.keyboard.press("ArrowRight")
+    expect(image).not_to_have_attribute("src", before)
+    assert readout.inner_text() != readout_before
+    # The play button runs through the frames by itself.
+    shown = image.get_attribute("src")
+    figure.locator("button.cagd-sx-play").click()
+    expect(image).not_to_have_attribute("src", shown)
+    page.screenshot(path=artefacts / "book-chapter-02.png")
+    assert (artefacts / "book-chapter-02.png").stat().st_size > 10_000
+
+
+def test_the_pdf_prints_the_pages_with_their_math_and_the_figures_first_frame(built, browser, tmp_path):
+    out, pages = built
+    chapter_2 = [p for p in pages if p.chapter == 2]
+    pdf = print_pdf(out, chapter_2, tmp_path / "chapter-2.pdf", browser=browser)
+    from pypdf import PdfReader
+
+    reader = PdfReader(pdf)
+    assert [item.title for item in reader.outline if not isinstance(item, list)][:2] == [
+        "About this course",
+        f"2. {CHAPTER_2.title}",
+    ]
+    text = "\n".join(page.extract_text() for page in reader.pages)
+    assert len(reader.pages) > 20 and "de Casteljau" in text
+    # The static de Casteljau figure prints the frame the page opens with, without its slider.
+    assert re.search(r"P\(0\.50\) = \(", text) and "precomputed frames" not in text
+    # MathJax typeset the formulas before printing: no TeX source is left in the text.
+    assert "\\frac" not in text and "$$" not in text
