@@ -16,6 +16,7 @@ import ipywidgets as widgets
 import numpy as np
 
 from cagd_ref._validation import as_float_array, as_points, as_vector
+from cagd_ref.approximation import chord_length_parameters
 from cagd_ref.interpolation import (
     bernstein_interpolation,
     bezier_segments_needed,
@@ -100,12 +101,11 @@ class _ExtraControls(Explorer):
 
 
 def _chord_length_parameters(points) -> np.ndarray:
-    """Parameters in [0, 1] proportional to the distance travelled along the polygon through the points."""
-    pts = as_points(points, min_count=2)
-    steps = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(pts, axis=0), axis=1))])
-    if steps[-1] == 0:
-        return np.linspace(0.0, 1.0, len(pts))
-    return steps / steps[-1]
+    """Chapter 11's chord-length parameters; uniform ones while every point sits on the same spot."""
+    try:
+        return chord_length_parameters(points)
+    except ValueError:
+        return np.linspace(0.0, 1.0, len(as_points(points, min_count=2)))
 
 
 class InterpolationExplorer(TwoPanels, ControlPointEditor, _ExtraControls):
