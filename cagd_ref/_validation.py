@@ -75,6 +75,14 @@ def as_vector(value, name: str, dim: int | None = None) -> np.ndarray:
     return array
 
 
+def as_line(value, name: str) -> np.ndarray:
+    """A homogeneous line (a, b, c) of a x + b y + c w = 0, shape (3,); (0, 0, 0) is none."""
+    line = as_vector(value, name, dim=3)
+    if not np.any(line):
+        raise ValueError(f"{name}: (0, 0, 0) is not a line")
+    return line
+
+
 def as_weights(weights, count: int, name: str = "weights") -> np.ndarray:
     """Weights of shape (count,), all nonzero (a zero weight is a point at infinity)."""
     array = as_float_array(weights, name)

@@ -19,7 +19,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._validation import as_count, as_float_array, as_points, as_scalar, as_vector, as_weights
+from ._validation import as_count, as_float_array, as_line, as_points, as_scalar, as_vector, as_weights
 from .bezier import evaluate, hodograph, subdivide, to_homogeneous
 from .geometry import join, normalize_line
 from .interpolation import second_derivative_bounds
@@ -139,19 +139,12 @@ def line_intersection(l1, l2) -> np.ndarray:
     >>> line_intersection([3.0, 4.0, 2.0], [3.0, 4.0, 3.0]).tolist()   # parallel: W = 0
     [4.0, -3.0, 0.0]
     """
-    l1 = _line(l1, "l1")
-    l2 = _line(l2, "l2")
+    l1 = as_line(l1, "l1")
+    l2 = as_line(l2, "l2")
     point = np.cross(l1, l2)
     if np.linalg.norm(point) <= 1e-12 * np.linalg.norm(l1) * np.linalg.norm(l2):
         raise ValueError(f"l1, l2: the lines {l1.tolist()} and {l2.tolist()} coincide, so they share every point")
     return point
-
-
-def _line(line, name: str) -> np.ndarray:
-    line = as_vector(line, name, dim=3)
-    if not np.any(line):
-        raise ValueError(f"{name}: (0, 0, 0) is not a line")
-    return line
 
 
 def project(point) -> np.ndarray:
@@ -723,7 +716,7 @@ def clip_curve(points, line, dmin, dmax, weights=None) -> tuple[float, float] | 
     (0.25, 0.75)
     """
     h = _homogeneous_columns(points, weights)
-    line = _line(line, "line")
+    line = as_line(line, "line")
     low = as_scalar(dmin, "dmin")
     high = as_scalar(dmax, "dmax")
     if low > high:
@@ -826,7 +819,7 @@ def clip_one_sided(line, points, weights=None, exact: bool = False) -> tuple[flo
     >>> round(low, 9), high
     (0.119760479, 1.0)
     """
-    line = _line(line, "line")
+    line = as_line(line, "line")
     h = _homogeneous_columns(points, weights)
     if np.any(h[:, 2] < 0):
         raise ValueError("weights: clipping relies on the convex hull property, which needs positive weights")

@@ -34,7 +34,7 @@ from math import comb
 
 import numpy as np
 
-from ._validation import as_count, as_float_array, as_points, as_scalar, as_vector, as_weights
+from ._validation import as_count, as_float_array, as_line, as_points, as_scalar, as_vector, as_weights
 from .bezier import de_casteljau, to_homogeneous
 from .polynomials import bernstein_multiply, bernstein_to_power
 
@@ -94,13 +94,6 @@ def _triples(value, name: str) -> np.ndarray:
     if not np.any(array):
         raise ValueError(f"{name}: every triple is (0, 0, 0), which is no point and no line")
     return array
-
-
-def _line(value, name: str) -> np.ndarray:
-    line = as_vector(value, name, dim=3)
-    if not np.any(line):
-        raise ValueError(f"{name}: (0, 0, 0) is no line")
-    return line
 
 
 def _is_zero(triple: np.ndarray, *sources: np.ndarray) -> bool:
@@ -186,7 +179,7 @@ def pencil_parameter_line(l0, l1, d0=1.0) -> np.ndarray:
     >>> pencil_parameter_line([0.0, 1.0, 0.0], [-1.0, 1.0, 0.0], 1.0).round(6).tolist()   # y = 0 and y = x
     [[-1.0, 0.0], [-1.0, -1.0]]
     """
-    l0, l1 = _line(l0, "l0"), _line(l1, "l1")
+    l0, l1 = as_line(l0, "l0"), as_line(l1, "l1")
     d0 = as_scalar(d0, "d0")
     if d0 <= 0:
         raise ValueError(f"d0: expected a positive distance, got {d0}")
@@ -219,7 +212,7 @@ def conic_from_pencils(l00, l01, l10, l11) -> np.ndarray:
     >>> conic_from_pencils([1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 1.0, 0.0], [-1.0, 0.0, 1.0]).tolist()
     [[0.0, 0.0, 1.0], [0.0, -0.5, 0.0], [1.0, 0.0, 1.0]]
     """
-    l00, l01, l10, l11 = (_line(v, name) for v, name in ((l00, "l00"), (l01, "l01"), (l10, "l10"), (l11, "l11")))
+    l00, l01, l10, l11 = (as_line(v, name) for v, name in ((l00, "l00"), (l01, "l01"), (l10, "l10"), (l11, "l11")))
     first, second = np.cross(l00, l01), np.cross(l10, l11)
     if _is_zero(first, l00, l01):
         raise ValueError("l00, l01: the first pencil is a single line (l00 and l01 are the same line)")
@@ -325,7 +318,7 @@ def axial_moving_line(axis, points, weights=None) -> np.ndarray:
     >>> axial_moving_line([0.0, 0.0, 1.0], [(1, 0), (1, 1)]).tolist()
     [[0.0, 1.0, 0.0], [-1.0, 1.0, 0.0]]
     """
-    axis = _line(axis, "axis")
+    axis = as_line(axis, "axis")
     return np.cross(axis, _homogeneous(points, weights)) + 0.0
 
 
