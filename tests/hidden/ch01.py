@@ -184,6 +184,11 @@ EXERCISES = [
         compare=close(1e-9, 1e-9),
         hint="The result is a vector along q, scaled by (p·q)/(q·q): divide by q·q, not by |q|. "
         "Reject a zero q and vectors of different lengths with a ValueError.",
+        rules={
+            EDGE: "`p`, `q`: vectors of the same length d (any d >= 1), as arrays, lists or tuples.",
+            BAD: "Raise a `ValueError` when `q` is the zero vector (there is no direction to project on) or when "
+                "`p` and `q` are not two vectors of the same length.",
+        },
     ),
     Exercise(
         id="01.triangle_area",
@@ -192,6 +197,11 @@ EXERCISES = [
         compare=close(1e-9, 1e-9),
         hint="Take the cross product of two edge vectors that start at the same vertex, e.g. "
         "(p2 - p1) × (p3 - p1), and halve its length. For 2-D points pad with z = 0; an area is never negative.",
+        rules={
+            EDGE: "Returns a float, never negative (the order of the vertices does not matter). Degenerate "
+                "triangles (collinear or repeated vertices) have area 0.",
+            BAD: "Raise a `ValueError` when the points do not all have the same dimension, or when it is not 2 or 3.",
+        },
     ),
     Exercise(
         id="01.rotate_about_axis",
@@ -200,6 +210,13 @@ EXERCISES = [
         compare=close(1e-9, 1e-9),
         hint="Normalise the axis direction first, the angle is in radians, and v = n × u (not u × n). "
         "A (k, 3) array of points must give a (k, 3) array back.",
+        rules={
+            EDGE: "`angle` is in **radians**; a positive angle turns counterclockwise when the axis direction "
+                "points at you (right-hand rule), a negative one the other way.",
+            MANY: "`point`: one 3-D point of shape `(3,)`, or k points as an array of shape `(k, 3)`; the result "
+                "has the same shape as `point`.",
+            BAD: "Raise a `ValueError` for a zero axis direction or for vectors that are not 3-D.",
+        },
     ),
     Exercise(
         id="01.rotation_matrix",
@@ -208,6 +225,10 @@ EXERCISES = [
         compare=close(1e-9, 1e-9),
         hint="Normalise the axis direction. The upper-left 3x3 block rotates about an axis through the origin; "
         "the last column must then move the axis back so that the axis point B stays fixed: T = B - R B.",
+        rules={
+            EDGE: "Same conventions as exercise 1.3: radians, any nonzero axis length",
+            BAD: "`ValueError` for a zero axis direction or vectors that are not 3-D.",
+        },
     ),
     Exercise(
         id="01.conic_type",
@@ -216,5 +237,11 @@ EXERCISES = [
         compare=exact(),
         hint="Only a, b, c matter: the sign of b² - 4ac (negative: ellipse, zero: parabola, positive: hyperbola). "
         "Treat |b² - 4ac| <= 1e-12 * max(|a|, |b|, |c|)² as zero, and reject a = b = c = 0.",
+        rules={
+            CONICS: "Return one of the three strings exactly as written.",
+            EDGE: "Degenerate conics (a pair of lines, a single point, no real points at all) are still classified "
+                "by the sign alone.",
+            BAD: "Raise a `ValueError` when $a=b=c=0$ (the equation is then linear, not a conic).",
+        },
     ),
 ]

@@ -350,6 +350,12 @@ EXERCISES = [
         compare=close(1e-9, 1e-12),
         hint="B_i^n(t) = C(n, i) (1-t)^(n-i) t^i: the power of t is i. A number t gives a float, a 1-D array "
         "of k values gives shape (k,); reject i < 0 or i > n with a ValueError.",
+        rules={
+            EDGE: "Values of `t` outside $[0,1]$ are allowed: just evaluate the formula.",
+            SHAPES: "`t`: a number (return a float) or a 1-D array/list of k numbers (return an array of shape "
+                "`(k,)`)",
+            BAD: "`i`, `n`: integers with $0\\le i\\le n$; raise a `ValueError` otherwise (e.g. `i > n` or `i < 0`).",
+        },
     ),
     Exercise(
         id="02.de_casteljau",
@@ -358,6 +364,13 @@ EXERCISES = [
         compare=close(1e-9, 1e-9),
         hint="A degree-n curve needs exactly n rounds of (1-t) P_i + t P_{i+1}. A number t gives shape (d,), "
         "an array of k values (even k = 1) gives (k, d); t outside [0, 1] works the same way.",
+        rules={
+            EDGE: "`points`: shape `(n+1, d)`, any degree $n\\ge0$ and dimension $d\\ge1$. A degree-0 \"curve\" is "
+                "its one point.",
+            SHAPES: "`t` is either a number, and then one point of shape `(d,)` comes back, or a 1-D array (or "
+                "list) of k numbers, and then an array of shape `(k, d)` comes back, even when k = 1.",
+            BAD: "Raise a `ValueError` when `points` is not two-dimensional or `t` has two or more dimensions.",
+        },
     ),
     Exercise(
         id="02.subdivide",
@@ -366,6 +379,10 @@ EXERCISES = [
         compare=close(1e-9, 1e-9),
         hint="The left half is the first point of every level of the triangle, P_0^0, P_0^1, ..., P_0^n; the right "
         "half is the last point of every level, starting from the bottom: P_0^n, P_1^{n-1}, ..., P_n^0.",
+        rules={
+            EDGE: "`t` outside $[0,1]$ works too",
+            BAD: "Raise a `ValueError` when `points` is not two-dimensional or `t` is not a single number.",
+        },
     ),
     Exercise(
         id="02.elevate",
@@ -374,6 +391,11 @@ EXERCISES = [
         compare=close(1e-9, 1e-9),
         hint="Degree n -> n+1 gives n+2 points P*_i = α_i P_{i-1} + (1-α_i) P_i with α_i = i/(n+1), "
         "keeping both end points; a degree-0 curve becomes two copies of its point.",
+        rules={
+            EDGE: "`points`: shape `(n+1, d)` with $n\\ge0$; returns shape `(n+2, d)`. A degree-0 curve becomes two "
+                "copies of its point.",
+            BAD: "Raise a `ValueError` when `points` is not two-dimensional or has no rows.",
+        },
     ),
     Exercise(
         id="02.hodograph",
@@ -382,6 +404,12 @@ EXERCISES = [
         compare=close(1e-9, 1e-9),
         hint="D_i = n/(t1 - t0) (P_{i+1} - P_i): the factor uses the degree n and the length of the interval. "
         "A degree-0 curve has one zero control point as its hodograph.",
+        rules={
+            EDGE: "A degree-0 curve (one point) is constant, so its derivative is the zero curve: return **one zero "
+                "point**, shape `(1, d)`.",
+            BAD: "`interval`: a pair `(t0, t1)` with `t0 < t1`; raise a `ValueError` otherwise, and when `points` "
+                "is not two-dimensional.",
+        },
     ),
     Exercise(
         id="02.to_homogeneous",
@@ -390,6 +418,12 @@ EXERCISES = [
         compare=close(1e-12, 1e-12),
         hint="Each row becomes w_i (x_i, ..., 1): multiply the coordinates by the weight and append the weight. "
         "Build a new array rather than scaling the caller's points in place; reject zero weights.",
+        rules={
+            EDGE: "`points`: shape `(n+1, d)`; `weights`: shape `(n+1,)`. Returns shape `(n+1, d+1)`: row $i$ is "
+                "the point times $w_i$ followed by $w_i$.",
+            BAD: "Weights may be negative, but not zero; raise a `ValueError` for a zero weight, for a wrong number "
+                "of weights, or for `points` that are not two-dimensional.",
+        },
     ),
     Exercise(
         id="02.from_homogeneous",
@@ -398,6 +432,12 @@ EXERCISES = [
         compare=close(1e-12, 1e-12),
         hint="The weight is the last column; divide the other columns by it and return (points, weights) "
         "with weights of shape (n+1,). A zero weight is a point at infinity: raise a ValueError.",
+        rules={
+            EDGE: "`homogeneous`: shape `(n+1, d+1)` with $d\\ge1$. Returns the tuple `(points, weights)` with "
+                "shapes `(n+1, d)` and `(n+1,)`.",
+            BAD: "A zero weight would be a point at infinity: raise a `ValueError` then, and also when the array is "
+                "not two-dimensional or has fewer than two columns.",
+        },
     ),
     Exercise(
         id="02.evaluate",
@@ -406,6 +446,13 @@ EXERCISES = [
         compare=close(1e-9, 1e-9),
         hint="With weights, run de Casteljau on the homogeneous points w_i (P_i, 1) and divide by the last "
         "coordinate at each t; without weights it is plain de Casteljau. Keep the scalar/array shape rule.",
+        rules={
+            EDGE: "`points`: shape `(n+1, d)`; `weights`: `None` or shape `(n+1,)` with no zero entry.",
+            SHAPES: "`t` is either a number, and then one point of shape `(d,)` comes back, or a 1-D array (or "
+                "list) of k numbers, and then an array of shape `(k, d)` comes back, even when k = 1.",
+            BAD: "Raise a `ValueError` for a zero weight, a wrong number of weights, or `points` that are not "
+                "two-dimensional.",
+        },
     ),
     Exercise(
         id="02.curvature",
@@ -415,6 +462,11 @@ EXERCISES = [
         hint="κ = |P' × P''| / |P'|³ (the cube of the speed). For a rational curve differentiate P = X / w with "
         "the quotient rule, or use P' = (X' - w' P)/w and P'' = (X'' - 2 w' P' - w'' P)/w. Curvature is never "
         "negative.",
+        rules={
+            EDGE: "The curvature is never negative.",
+            SHAPES: "`t`: a number (return a float) or a 1-D array of k numbers (return shape `(k,)`).",
+            BAD: "Raise a `ValueError` for 1-D points (shape `(n+1, 1)`) and for a zero weight.",
+        },
     ),
     Exercise(
         id="02.bernstein_integral",
@@ -423,5 +475,10 @@ EXERCISES = [
         compare=close(1e-9, 1e-12),
         hint="The result has one more coefficient than the input: q_0 = 0 and q_i = (p_0 + ... + p_{i-1})/(n+1), "
         "where n is the degree of p (so divide by the number of input coefficients).",
+        rules={
+            EDGE: "`coeffs`: shape `(n+1,)`, or `(n+1, d)` for d polynomials at once (one per column). Returns "
+                "shape `(n+2,)` or `(n+2, d)`.",
+            BAD: "Raise a `ValueError` for an empty array or one with more than two dimensions.",
+        },
     ),
 ]

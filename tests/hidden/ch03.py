@@ -108,6 +108,7 @@ def bernstein_horner_cases(rng):
         cases.append(Case(RANDOM, (_coefficients(rng, 0, 12), _ts(rng, low, high))))
     cases += _bad_coefficient_cases(0.5)
     cases.append(Case(BAD, (NOTES_X_BERNSTEIN, [[0.1, 0.2]])))
+    cases.append(Case(BAD, (np.ones(1031), 0.5)))  # degree 1030: the binomial coefficients overflow
     return cases
 
 
@@ -160,6 +161,15 @@ EXERCISES = [
         compare=close(1e-9, 1e-9),
         hint="Coefficients are ascending (a0 first), so start from the last one: h = a_n, then h = h·t + a_i for "
         "i = n-1 down to 0. " + SHAPE_RULE,
+        rules={
+            EDGE: "Any real `t` is allowed, and a degree-0 polynomial is the constant $a_0$.",
+            SHAPES: "`t` is either a number (a 0-d array counts as one), and then a float (or shape `(d,)` for "
+                "columns) comes back, or a 1-D array (or list) of k numbers, and then shape `(k,)` (or `(k, d)`) "
+                "comes back, even when k = 1.",
+            COLUMNS: "shape `(n+1,)` or `(n+1, d)` (one polynomial per column)",
+            BAD: "Raise a `ValueError` for an empty or three-dimensional `coeffs`, NaN or infinite coefficients, or "
+                "a two-dimensional `t`.",
+        },
     ),
     Exercise(
         id="03.bernstein_horner",
@@ -169,6 +179,16 @@ EXERCISES = [
         hint="With s = 1 - t: start from b_0 C(n,0) s, then for i = 1..n-1 update tⁱ and C(n, i) = C(n, i-1)(n-i+1)/i, "
         "add C(n, i) tⁱ b_i and multiply by s; finally add tⁿ b_n. A degree-0 polynomial is its constant. "
         + SHAPE_RULE,
+        rules={
+            EDGE: "Values outside $[0,1]$ are allowed: the formula extends the polynomial.",
+            SHAPES: "`t`: a number (a 0-d array counts as one) gives a float (or shape `(d,)` for columns), a 1-D "
+                "array (or list) of k numbers gives shape `(k,)` (or `(k, d)`), even when k = 1.",
+            COLUMNS: "shape `(n+1,)` or `(n+1, d)`, $n\\ge0$. A degree-0 polynomial is the constant $b_0$.",
+            BAD: "Raise a `ValueError` for an empty or three-dimensional `coeffs`, NaN or infinite coefficients, a "
+                "two-dimensional `t`, and a degree $n$ above 1029 (more than 1030 coefficients): beyond it the "
+                "binomial coefficients $\\binom ni$ overflow a float (the chapter's accuracy section), so refuse "
+                "such input instead of returning infinities or NaN.",
+        },
     ),
     Exercise(
         id="03.power_to_bernstein",
@@ -178,6 +198,13 @@ EXERCISES = [
         hint="Divide a_j by C(n, j) and put the results in the left column of the difference table; then fill "
         "the table from the left (each entry = its left neighbour + the entry below that neighbour) and read "
         "the top row. Check: 1 + 2t gives (1, 3).",
+        rules={
+            EDGE: "Check by hand: $1+2t$ is the line from 1 to 3, so it gives $(1, 3)$; $t$ as a cubic gives "
+                "$(0,\\tfrac13,\\tfrac23,1)$.",
+            COLUMNS: "shape `(n+1,)` or `(n+1, d)` (convert every column); returns the same shape.",
+            BAD: "Raise a `ValueError` for an empty or three-dimensional `coeffs` and for NaN or infinite "
+                "coefficients.",
+        },
     ),
     Exercise(
         id="03.bernstein_to_power",
@@ -186,5 +213,11 @@ EXERCISES = [
         compare=close(1e-9, 1e-9),
         hint="Put the b_i in the top row, form the forward differences row by row, take the first entry of each "
         "row (Δʲ b_0, the left column) and multiply it by C(n, j). Check: (1, 3) gives 1 + 2t.",
+        rules={
+            EDGE: "Degree 0 is allowed (a constant).",
+            COLUMNS: "shape `(n+1,)` or `(n+1, d)`; returns the same shape.",
+            BAD: "Raise a `ValueError` for an empty or three-dimensional `coeffs` and for NaN or infinite "
+                "coefficients.",
+        },
     ),
 ]

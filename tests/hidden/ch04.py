@@ -19,10 +19,12 @@ from cagd_ref import forward_differencing
 
 NOTES = "notes example"
 EDGE = "edge cases"
+ACCURACY = "accuracy"
 RANDOM = "random"
 BAD = "bad input"
 
 CURVE = [(0.0, 1.0), (1.0, 0.0), (2.0, -1.0), (3.0, 0.5)]  # x(t) and y(t) of a cubic curve, power form
+SEXTIC = [1.0, -2.0, 3.0, -4.0, 5.0, -1.0, 2.0]  # stepped 300 times by 0.005 it shows where the start comes from
 
 
 def _shape(rng):
@@ -74,6 +76,8 @@ def table_cases(rng):
     cases += [
         Case(BAD, ([],)),
         Case(BAD, (np.zeros((2, 2, 2)),)),
+        Case(BAD, ([1.0, float("nan"), 4.0],)),
+        Case(BAD, ([(1.0, 2.0), (float("inf"), 0.0)],)),
     ]
     return cases
 
@@ -98,6 +102,10 @@ def eval_cases(rng):
         Case(EDGE, (CURVE, 0.0, 0.1, 0), visible=True),
         Case(EDGE, ([[1.0], [0.0], [2.0]], -0.5, 0.25, 5), visible=True),  # one column stays a column
         Case(EDGE, ([1.0, -1.0, 0.5, 0.25, -0.125, 0.1, 0.05], -1.0, 0.05, 60), visible=True),
+        # Differences of values lose about half their digits here and the loop amplifies the loss by C(k, 6):
+        # started from the table of f(t0 + i δ) the last values miss 1e-6 by a factor of about 300.
+        Case(ACCURACY, (SEXTIC, -0.5, 0.005, 301), visible=True),
+        Case(ACCURACY, (np.column_stack([SEXTIC, SEXTIC[::-1]]), -0.5, 0.005, 301)),
     ]
     for _ in range(16):
         coeffs = rng.uniform(-5, 5, _shape(rng))
@@ -108,6 +116,9 @@ def eval_cases(rng):
         Case(BAD, ([1.0, 2.0], 0.0, 0.1, 2.5)),
         Case(BAD, ([], 0.0, 0.1, 3)),
         Case(BAD, (np.zeros((2, 2, 2)), 0.0, 0.1, 3)),
+        Case(BAD, ([1.0, float("inf")], 0.0, 0.1, 3)),
+        Case(BAD, ([1.0, 2.0], float("nan"), 0.1, 3)),
+        Case(BAD, ([1.0, 2.0], 0.0, float("inf"), 3)),
     ]
     return cases
 
@@ -121,14 +132,31 @@ EXERCISES = [
         hint="Return a list of n+1 rows: row 0 is the values, row j holds next-minus-previous of row j-1, and the "
         "last row is a single number. For an (n+1, d) array take the differences down the rows (axis 0), "
         "not across the coordinates.",
+        rules={
+            EDGE: "`values`: shape `(n+1,)` or `(n+1, d)` with $n\\ge0$. For `(n+1, d)` every column is differenced "
+                "on its own: the differences go down the rows, never across the coordinates.",
+            BAD: "Raise a `ValueError` for an empty array, one with three or more dimensions, or NaN or infinite "
+                "values.",
+        },
     ),
     Exercise(
         id="04.forward_difference_eval",
         reference=forward_differencing.forward_difference_eval,
         cases=eval_cases,
         compare=close(1e-6, 1e-6),
-        hint="Start from f(t0), Δ¹(t0), ..., Δⁿ(t0) (for example the difference table of f at t0, t0+δ, ..., "
-        "t0+nδ). Each step records f, then updates f += Δ¹, Δ¹ += Δ², ... using the old value below each one. "
+        hint="Start from f(t0), Δ¹(t0), ..., Δⁿ(t0) in closed form: re-expand f about t0, q_k = b_k δᵏ, then "
+        "Δʲ = j! Σ_k S(k, j) q_k (a table of differences of values loses digits). Each step records f, then "
+        "updates f += Δ¹, Δ¹ += Δ², ... using the old value below each one. "
         "Return exactly `count` values; an (n+1,) input gives (count,), an (n+1, d) input gives (count, d).",
+        rules={
+            EDGE: "`t0`, `delta`: numbers; `delta` may be negative (stepping backwards) or zero.",
+            ACCURACY: "The values must be right to within $10^{-6}$ (relative or absolute). The tests include a "
+                "polynomial of degree 6 stepped 300 times with $\\delta=0.005$: started from differences of "
+                "values, the loop misses this tolerance by a factor of about 300; started from the closed form, it "
+                "meets it easily.",
+            BAD: "Raise a `TypeError` if `count` is not an integer and a `ValueError` if it is negative, if "
+                "`coeffs` is empty or has three or more dimensions, or if `coeffs`, `t0` or `delta` hold NaN or "
+                "infinity.",
+        },
     ),
 ]

@@ -56,7 +56,8 @@ def _basis_cases(rng):
         Case(SHAPES, ([],)),
     ]
     cases += [Case(RANDOM, (_ts(rng),)) for _ in range(12)]
-    cases += [Case(BAD, ([[0.1, 0.2]],)), Case(BAD, ("half",))]
+    cases += [Case(BAD, ([[0.1, 0.2]],)), Case(BAD, ("half",)), Case(BAD, (float("nan"),))]
+    cases.append(Case(BAD, ([0.5, float("inf")],)))
     return cases
 
 
@@ -88,6 +89,8 @@ def overhauser_point_cases(rng):
         Case(BAD, (ARCH, 1.5)),
         Case(BAD, (WAVE, -0.1)),
         Case(BAD, ([0.0, 1.0, 2.0, 3.0], 0.5)),
+        Case(BAD, ([(0.0, 0.0), (1.0, float("nan")), (3.0, 2.5), (4.0, 0.5)], 0.5)),
+        Case(BAD, (ARCH, [0.5, float("inf")])),
     ]
     return cases
 
@@ -113,6 +116,7 @@ def timmer_to_bezier_cases(rng):
         Case(BAD, (ARCH[:3],)),
         Case(BAD, (ARCH + [(5.0, 5.0)],)),
         Case(BAD, ([0.0, 1.0, 2.0, 3.0],)),
+        Case(BAD, ([(0.0, 0.0), (1.0, 2.0), (float("inf"), 2.5), (4.0, 0.5)],)),
     ]
     return cases
 
@@ -125,6 +129,12 @@ EXERCISES = [
         compare=close(1e-9, 1e-12),
         hint="f0 = (1-t)²(1-2t), f1 = 4t(1-t)², f2 = 4t²(1-t), f3 = t²(2t-1): the middle factor is 4, not Bézier's 3. "
         "A number t gives shape (4,), k values give (k, 4) with one row per t (stack columns, not rows).",
+        rules={
+            EDGE: "Values of `t` outside $[0,1]$ are allowed",
+            SHAPES: "A 0-d array counts as a number, and an empty list gives shape `(0, 4)`.",
+            BAD: "Raise a `ValueError` for a `t` with two or more dimensions or with NaN or infinite values, and a "
+                "`TypeError` for a `t` that is not numbers (a string, say).",
+        },
     ),
     Exercise(
         id="05.ball_basis",
@@ -133,6 +143,12 @@ EXERCISES = [
         compare=close(1e-9, 1e-12),
         hint="f0 = (1-t)², f1 = 2t(1-t)², f2 = 2t²(1-t), f3 = t²: the end functions are quadratic, the middle ones "
         "carry a factor 2. A number t gives shape (4,), k values give (k, 4), one row per t.",
+        rules={
+            EDGE: "Values of `t` outside $[0,1]$ are allowed",
+            SHAPES: "A 0-d array counts as a number, and an empty list gives shape `(0, 4)`.",
+            BAD: "Raise a `ValueError` for a `t` with two or more dimensions or with NaN or infinite values, and a "
+                "`TypeError` for a `t` that is not numbers (a string, say).",
+        },
     ),
     Exercise(
         id="05.overhauser_point",
@@ -141,6 +157,13 @@ EXERCISES = [
         compare=close(1e-9, 1e-9),
         hint="Segment j = floor(t) uses points j..j+3 with u = t - j and runs from points[j+1] to points[j+2]; at "
         "t = c-3 use the last segment with u = 1. The end tangents are half the chords: (P2 - P0)/2 and (P3 - P1)/2.",
+        rules={
+            EDGE: "except that $t=c-3$ (the very end) belongs to the last segment with $u=1$",
+            SHAPES: "`t`: a number (return one point, shape `(d,)`) or a 1-D array of k numbers (return `(k, d)`); "
+                "different values may fall in different segments.",
+            BAD: "Raise a `ValueError` for fewer than 4 points, `points` that are not two-dimensional, NaN or "
+                "infinite coordinates or parameters, or any `t` outside $[0, c-3]$.",
+        },
     ),
     Exercise(
         id="05.timmer_to_bezier",
@@ -149,5 +172,10 @@ EXERCISES = [
         compare=close(1e-9, 1e-9),
         hint="Match the ends and the end derivatives: Q'(0) = 4(Q1 - Q0) must equal 3(P1 - P0), so P1 = (4 Q1 - Q0)/3, "
         "and likewise P2 = (4 Q2 - Q3)/3; P0 = Q0 and P3 = Q3. Exactly four points of any dimension.",
+        rules={
+            EDGE: "`points`: shape `(4, d)`, any dimension $d\\ge1$. Return shape `(4, d)`.",
+            BAD: "Raise a `ValueError` unless there are exactly four points in a two-dimensional array, and for NaN "
+                "or infinite coordinates.",
+        },
     ),
 ]

@@ -25,6 +25,7 @@ NOTES = "notes example"
 EDGE = "edge cases"
 SHAPES = "scalar vs array t"
 CLOSED = "closed curves"
+ZERO_SPANS = "zero-length end spans"
 RANDOM = "random"
 BAD = "bad input"
 
@@ -199,6 +200,11 @@ def blossom_cases(rng):
         Case(EDGE, (SEVEN, DOUBLE, [2.0, 2.0, 2.5]), visible=True),
         Case(EDGE, (POLYLINE, [0.0, 1.0, 3.0, 4.0], [2.0]), visible=True),  # degree 1: a point on the polyline
         Case(EDGE, (SPACE, [0.0, 0.5, 2.0, 2.5, 4.0, 7.0], [2.5, 3.0]), visible=True),
+        # A zero-length end span: the outermost control point belongs to no segment of positive length, and its
+        # label, evaluated on the first (last) segment of positive length, is not that point.
+        Case(ZERO_SPANS, (SIX, [0.0, 1.0, 2.0, 2.0, 3.0, 4.0, 5.0, 6.0], [0.0, 1.0, 2.0]), visible=True),
+        Case(ZERO_SPANS, (SEVEN[:6], [0.0, 1.0, 2.0, 3.0, 4.0, 4.0, 5.0, 6.0], [4.0, 5.0, 6.0]), visible=True),
+        Case(ZERO_SPANS, (SEVEN[:6], [0.0, 1.0, 2.0, 2.0, 3.0, 4.0, 5.0, 6.0], [1.0, 2.0, 2.0]), visible=True),
     ]
     for _ in range(12):
         points, knots, n = _spline(rng)
@@ -335,6 +341,7 @@ def split_interval_cases(rng):
         Case(BAD, (FIGURE_6_11, [1.0, 1.0, -1.0, 2.0, 3.0, 1.0, 1.0], 4, 0.5)),
         Case(BAD, (PENTAGON, CLOSED_INTERVALS["longer"][:4], 1, 0.5), {"degree": 3}),  # closed: one per point
         Case(BAD, (PENTAGON, CLOSED_INTERVALS["longer"], 5, 0.5), {"degree": 3}),
+        Case(BAD, (PENTAGON, CLOSED_INTERVALS["longer"], -1, 0.5), {"degree": 3}),  # index does not wrap
         Case(BAD, (PENTAGON, CLOSED_INTERVALS["triple_knot"], 0, 0.0), {"degree": 3}),  # a fourfold knot
     ]
     return cases
@@ -350,6 +357,15 @@ EXERCISES = [
         "[t_j, t_(j+1)) use P_(j-n+1) ... P_(j+1); at level r the point with index i is "
         "((t_(i+n-r) - t) P_(i-1) + (t - t_(i-1)) P_i) / (t_(i+n-r) - t_(i-1)). At the end of the domain use the "
         "last span of positive length.",
+        rules={
+            EDGE: "At a knot use the span to its right; at the end of the domain $t=t_{c-1}$ use the last span of "
+                "positive length that ends there.",
+            SHAPES: "`t`: a number in the domain $[t_{n-1},t_{c-1}]$, giving shape `(d,)`, or a 1-D array of k such "
+                "numbers, giving `(k, d)`.",
+            BAD: "Raise a `ValueError` if `points` is not two-dimensional, the knots decrease, there are fewer "
+                "knots than points (degree below 1), `t` lies outside the domain, or `t` has two or more "
+                "dimensions.",
+        },
     ),
     Exercise(
         id="06.insert_knot",
@@ -359,6 +375,12 @@ EXERCISES = [
         hint="With t_j <= t < t_(j+1), the n-1 points P_(j-n+2) ... P_j are replaced by n new ones, "
         "Q_m = ((t_(m+n-1) - t) P_(m-1) + (t - t_(m-1)) P_m) / (t_(m+n-1) - t_(m-1)) for m = j-n+2 ... j+1; "
         "return (c+1 points, c+n knots).",
+        rules={
+            EDGE: "`t` may be anywhere in the domain, its two ends included, and may equal an existing knot.",
+            BAD: "Raise a `ValueError` for `points` that are not two-dimensional, decreasing knots, or fewer knots "
+                "than points (degree below 1), for a `t` outside the domain or not a single number, and when $t$ "
+                "already appears $n$ times among the knots.",
+        },
     ),
     Exercise(
         id="06.bezier_segments",
@@ -368,6 +390,11 @@ EXERCISES = [
         hint="Insert every distinct knot value of the domain [t_(n-1), t_(c-1)], its two ends included, until it "
         "appears n times; then each span [t_j, t_(j+1)] of positive length has the Bézier points P_(j-n+1) ... "
         "P_(j+1). Skip spans of length zero.",
+        rules={
+            EDGE: "Return an array of shape `(s, n+1, d)`, one Bézier curve per span of positive length, in order.",
+            BAD: "Raise a `ValueError` for `points` that are not two-dimensional, decreasing knots, or fewer knots "
+                "than points (degree below 1).",
+        },
     ),
     Exercise(
         id="06.blossom",
@@ -377,6 +404,13 @@ EXERCISES = [
         hint="Pick the span of min(args) (as de_boor would for t = min(args), clipped into the domain) and run "
         "the de Boor triangle with the r-th argument at level r. Then compare with the other spans whose "
         "open interval meets [min(args), max(args)]: if their values differ, raise a ValueError.",
+        rules={
+            EDGE: "`args`: $n$ numbers, in any order, within $[t_0, t_{c+n-2}]$.",
+            ZERO_SPANS: "the result is not that control point (the tests include this case)",
+            BAD: "Raise a `ValueError` for `points` that are not two-dimensional, decreasing knots, or fewer knots "
+                "than points (degree below 1), for a wrong number of arguments, for arguments outside "
+                "$[t_0,t_{c+n-2}]$, and for ambiguous arguments.",
+        },
     ),
     Exercise(
         id="06.bspline_basis",
@@ -386,6 +420,14 @@ EXERCISES = [
         hint="B_i is the B-spline with coefficient 1 at i and 0 elsewhere: run de_boor on those 1-D "
         "'points'. Or use Cox-de Boor on the knots padded with one extra end knot on each side, with 0/0 = 0. "
         "A number t gives a float, an array (k,).",
+        rules={
+            EDGE: "`knots`: the knot vector of a degree-`degree` spline, so there are `c = len(knots) - degree + 1` "
+                "basis functions and $0\\le i<c$.",
+            SHAPES: "a number gives a float, a 1-D array of k numbers an array of shape `(k,)`. A 0-d array counts "
+                "as a number.",
+            BAD: "Raise a `ValueError` for `degree < 1`, decreasing knots, fewer than `2 * degree` knots, `i` out "
+                "of range and `t` outside the domain.",
+        },
     ),
     Exercise(
         id="06.greville",
@@ -394,6 +436,10 @@ EXERCISES = [
         compare=close(1e-12, 1e-12),
         hint="One abscissa per control point: the average of the n knots of its polar label, "
         "(t_i + ... + t_(i+n-1)) / n, for i = 0 ... len(knots) - n.",
+        rules={
+            EDGE: "Repeated knots are allowed.",
+            BAD: "Raise a `ValueError` for `degree < 1`, decreasing knots, or fewer than `2 * degree` knots.",
+        },
     ),
     Exercise(
         id="06.split_interval",
@@ -404,5 +450,14 @@ EXERCISES = [
         "return the differences of the new knots. Closed curve of degree n: P_i has the label "
         "f(t_(i+s), ..., t_(i+s+n-1)) with s = -((n-1)//2) on the periodic knots; only the n-1 points whose "
         "labels contain both ends of interval q are replaced (by n new ones).",
+        rules={
+            EDGE: "Only intervals of the domain can be split, $n-1\\le q\\le c-2$; the others hang past the ends of "
+                "the polygon.",
+            CLOSED: "one interval per control point; the knots and labels below run cyclically through the intervals",
+            BAD: "Raise a `ValueError` for a negative interval, a wrong number of intervals, an `index` out of "
+                "range (for closed curves $0\\le q<c$; for open curves, outside the domain), a `fraction` outside "
+                "$[0,1]$, and a split that would make a knot appear more than $n$ times (for instance `fraction=0` "
+                "next to a knot that already appears $n$ times).",
+        },
     ),
 ]

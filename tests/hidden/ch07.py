@@ -342,6 +342,13 @@ EXERCISES = [
         compare=projective,
         hint="Return the cross product l1 × l2 itself, without dividing by W: parallel lines give W = 0. "
         "Raise a ValueError when |l1 × l2| <= 1e-12 |l1| |l2| (the same line) or a line is (0, 0, 0).",
+        rules={
+            EDGE: "The line at infinity $(0, 0, c)$, $c\\neq0$, is a line like any other: it meets $(a, b, c')$ at "
+                "that line's point at infinity.",
+            PARALLEL: "for parallel lines $W$ must come out as exactly 0 (to rounding).",
+            BAD: "Raise a `ValueError` if a line does not have shape `(3,)`, if a line is $(0,0,0)$, and if the two "
+                "lines coincide",
+        },
     ),
     Exercise(
         id="07.implicit_polynomial",
@@ -351,6 +358,11 @@ EXERCISES = [
         hint="d is the largest i + j with f[i, j] != 0 and n = max(len(x), len(y), len(w)) - 1; add "
         "f[i, j] X^i Y^j W^(d-i-j) with np.convolve for the products, into an array of length d·n + 1 "
         "(ascending powers). w=None means W = 1.",
+        rules={
+            EDGE: "Keep the zeros at the end when the true degree is lower.",
+            BAD: "Raise a `ValueError` if `f` is not 2-D or all its coefficients are 0, or if `x`, `y` or `w` is "
+                "not 1-D.",
+        },
     ),
     Exercise(
         id="07.fat_line",
@@ -359,6 +371,11 @@ EXERCISES = [
         compare=close(1e-9, 1e-9),
         hint="line = (x0, y0, 1) × (xn, yn, 1), divided by sqrt(a² + b²); d_i = a x_i + b y_i + c for every "
         "control point, the end points included, so dmin = min(d_i) <= 0 <= dmax = max(d_i).",
+        rules={
+            EDGE: "so $d_{min}\\le 0\\le d_{max}$ always (for a segment both are 0).",
+            BAD: "Raise a `ValueError` if `points` does not have shape `(n+1, 2)` with $n\\ge1$, and if $\\mathbf "
+                "P_0=\\mathbf P_n$ (then there is no line through the end points).",
+        },
     ),
     Exercise(
         id="07.clip_range",
@@ -368,6 +385,10 @@ EXERCISES = [
         hint="The extremes over: t_i = i/n of each control point with dmin <= c_i <= dmax, and the crossings "
         "with d = dmin and d = dmax of the segments between every pair of control points (not only "
         "neighbours: that is the polygon, not the hull). None if there are none.",
+        rules={
+            EDGE: "Touching counts: a single point of contact gives `t_lo == t_hi`.",
+            BAD: "Raise a `ValueError` if `dmin > dmax`, or if `coeffs` is not a non-empty 1-D array.",
+        },
     ),
     Exercise(
         id="07.clip_one_sided",
@@ -377,6 +398,11 @@ EXERCISES = [
         hint="e_i = line · w_i (x_i, y_i, 1). None if every e_i < 0. If e_0 < 0, t_lo is the smallest positive "
         "crossing of the lines through (0, e_0) and (i/n, e_i), i >= 1, with the axis; if e_n < 0, t_hi is the "
         "largest crossing below 1 of the lines through (1, e_n) and (i/n, e_i), i < n.",
+        rules={
+            EDGE: "implement the rule, not the exact hull.",
+            BAD: "Raise a `ValueError` for a line of the wrong shape or $(0,0,0)$, points of the wrong shape, and "
+                "weights of the wrong length or not all positive.",
+        },
     ),
     Exercise(
         id="07.intersect_curves",
@@ -387,5 +413,15 @@ EXERCISES = [
         "map the local range back to [a, b]; when a round keeps more than 80 % of both ranges, split the longer "
         "one; merge results that touch (split points). Pad the fat lines a little, cap the steps, and raise a "
         "ValueError (or RuntimeError) for curves that overlap.",
+        rules={
+            CURVES: "All pairs $(t, u)\\in[0,1]^2$ with $\\mathbf P(t)=\\mathbf Q(u)$",
+            ENDS: "Every intersection exactly once: also one that lies on a parameter where you split a curve, one "
+                "at shared end points",
+            TANGENT: "and a **tangential** one, where the curves touch without crossing (a parabola on its tangent "
+                "line).",
+            RATIONAL: "`p_weights`, `q_weights`: `None` or positive weights.",
+            BAD: "Raise a `ValueError` for shapes like these not being met, weights that are not positive, and "
+                "`tol` outside $(0, 1)$.",
+        },
     ),
 ]

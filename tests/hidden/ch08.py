@@ -297,6 +297,14 @@ EXERCISES = [
         hint="P(t) = Q(t) + ρ (y'(t), -x'(t)) / |Q'(t)|: the unit normal on the right of the direction of travel. "
         "For a rational curve differentiate Q = X / w by the quotient rule, Q' = (X' - w' Q) / w. Raise a "
         "ValueError where Q'(t) = 0.",
+        rules={
+            EDGE: "`rho`: a number of either sign; `rho = 0` gives the curve itself.",
+            RATIONAL: "`weights`: `None` or `n+1` positive numbers.",
+            SHAPES: "`t`: a number, giving shape `(2,)`, or a 1-D array of k numbers, giving `(k, 2)`",
+            BAD: "Raise a `ValueError` if the points are not of shape `(n+1, 2)` with $n\\ge1$ (a 3-D curve, a "
+                "single point), if a weight is zero or negative or their number is not `n+1`, if `t` has two or "
+                "more dimensions, and if $\\mathbf Q'(t)=0$ at a requested parameter",
+        },
     ),
     Exercise(
         id="08.offset_derivative",
@@ -305,6 +313,14 @@ EXERCISES = [
         compare=close(1e-9, 1e-9),
         hint="P'(t) = (1 + ρκ(t)) Q'(t) with the signed curvature κ = (x'y'' - y'x'') / |Q'|³ (positive turning "
         "left). Between the cusps 1 + ρκ < 0 and the offset runs backwards.",
+        rules={
+            EDGE: "$\\kappa$ is **signed**.",
+            RATIONAL: "`weights` `None` or `n+1` positive numbers",
+            SHAPES: "`t` a number, giving shape `(2,)`, or a 1-D array of k numbers, giving `(k, 2)`",
+            BAD: "Raise a `ValueError` if the points are not of shape `(n+1, 2)` with $n\\ge1$ (a 3-D curve, a "
+                "single point), if a weight is zero or negative or their number is not `n+1`, if `t` has two or "
+                "more dimensions, and if $\\mathbf Q'(t)=0$ at a requested parameter",
+        },
     ),
     Exercise(
         id="08.offset_cusps",
@@ -314,6 +330,14 @@ EXERCISES = [
         hint="1 + ρκ = 0 on the offset's side only (ρκ < 0): squaring |Q'|³ = -ρ (x'y'' - y'x'') gives a "
         "polynomial whose roots also include the other side's, where ρ (x'y'' - y'x'') > 0: drop those. Where "
         "1 + ρκ only touches zero (a double root), report it once; ends count.",
+        rules={
+            EDGE: "The ends count: $t=0$ or $t=1$ is a cusp when $1+\\rho\\kappa$ vanishes there.",
+            RATIONAL: "Rational curves (`weights`) use the derivatives of the conventions above; a circular arc's "
+                "offsets are concentric arcs.",
+            BAD: "Raise a `ValueError` for points not of shape `(n+1, 2)` with $n\\ge1$, for a weight that is zero "
+                "or negative (or a wrong number of weights), for a curve whose control points all coincide, and "
+                "when $1+\\rho\\kappa$ vanishes **identically**",
+        },
     ),
     Exercise(
         id="08.ph_cubic",
@@ -322,6 +346,10 @@ EXERCISES = [
         compare=close(1e-12, 1e-12),
         hint="P1 = P0 + (u0² - v0², 2u0v0)/3, P2 = P1 + (u0u1 - v0v1, u0v1 + u1v0)/3, "
         "P3 = P2 + (u1² - v1², 2u1v1)/3: the hodograph's Bernstein coefficients, integrated.",
+        rules={
+            EDGE: "`p0`, `u`, `v`: two numbers each. Return shape `(4, 2)`, right to within $10^{-12}$.",
+            BAD: "Raise a `ValueError` if `p0`, `u` or `v` is not a 1-D array of two numbers.",
+        },
     ),
     Exercise(
         id="08.ph_offset",
@@ -331,5 +359,12 @@ EXERCISES = [
         hint="With σ the polynomial whose square is x'² + y'² (degree n-1), the offset is the rational curve "
         "(σQ + ρ(y', -x'), σ) of degree 2n-1: multiply σ by Q, raise ρ(y', -x') and σ to degree 2n-1; the "
         "weights are σ's raised coefficients and the points the numerator divided by them.",
+        rules={
+            EDGE: "Degree-raised PH curves are PH curves too (a PH cubic raised to degree 4 gives 8 points), and so "
+                "is a line ($n=1$: its offset is the shifted line).",
+            BAD: "Raise a `ValueError` for points not of shape `(n+1, 2)` with $n\\ge1$, for a curve that is not PH "
+                "(the arch; a parabola), and for a PH curve that stops somewhere in $[0,1]$ ($u$ and $v$ with a "
+                "common root).",
+        },
     ),
 ]

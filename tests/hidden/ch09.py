@@ -261,6 +261,12 @@ EXERCISES = [
         compare=close(1e-10, 1e-12),
         hint="h_k = Σ_(i+j=k) C(m, i) C(n, j) f_i g_j / C(m+n, k), k = 0 .. m+n: scale f and g by their binomials, "
         "convolve, divide by C(m+n, k). Tables (m+1, d) and (n+1, d) multiply column by column.",
+        rules={
+            EDGE: "`f`: shape `(m+1,)`, `g`: shape `(n+1,)`, any degrees $m,n\\ge0$: return shape `(m+n+1,)`.",
+            COLUMNS: "Tables of coefficients multiply column by column",
+            BAD: "Raise a `ValueError` when one argument is a vector and the other a table, when two tables have "
+                "different numbers of columns, and for empty or three-dimensional arrays.",
+        },
     ),
     Exercise(
         id="09.bernstein_from_roots",
@@ -269,6 +275,12 @@ EXERCISES = [
         compare=close(1e-9, 1e-9),
         hint="On [t0, t1] the factor t - r has the Bernstein coefficients <t0 - r, t1 - r>: start from <leading> "
         "and multiply by one factor after another with the product formula (exercise 9.1).",
+        rules={
+            EDGE: "`roots`: shape `(k,)`, any real numbers (inside the interval or not, repeated or not); `k = 0` "
+                "is allowed and gives the constant `[leading]`.",
+            BAD: "Raise a `ValueError` when `roots` is not one-dimensional or `interval` is not a pair $(t_0,t_1)$ "
+                "with $t_0<t_1$.",
+        },
     ),
     Exercise(
         id="09.deflate",
@@ -277,6 +289,12 @@ EXERCISES = [
         compare=close(1e-12, 1e-12),
         hint="g_i = n y_(i+1) / (i + 1) for i = 0 .. n-1 (n = degree of f), after checking |y_0| <= 1e-12 max|y|; "
         "a constant has nothing to deflate.",
+        rules={
+            EDGE: "$y_0$ counts as zero when $|y_0|\\le10^{-12}\\max_i|y_i|$ (zero to rounding; it is then simply "
+                "dropped).",
+            BAD: "Otherwise $t$ does not divide $f$: raise a `ValueError`. Also raise one for a constant (`n = 0`) "
+                "and for input that is not one-dimensional.",
+        },
     ),
     Exercise(
         id="09.hull_march",
@@ -287,6 +305,13 @@ EXERCISES = [
         "rounding, record a and deflate; else c = the leftmost crossing of the hull of (i/n, y_i) with the axis "
         "(all pairs of points on opposite sides, not just neighbours), t = a + (1 - a) c, split at c and keep the "
         "right part; a step <= tol, a value zero to rounding or a sign change is a root at t (deflate it).",
+        rules={
+            EDGE: "The tests use polynomials whose roots inside the interval are simple and well separated",
+            ENDS: "one per deflation, so a double root at an end comes back twice.",
+            BAD: "Raise a `ValueError` for coefficients that are not a non-empty one-dimensional array, for the "
+                "zero polynomial (all coefficients 0), for an interval without $t_0<t_1$ and for `tol` outside "
+                "$(0,1)$.",
+        },
     ),
     Exercise(
         id="09.bernstein_roots",
@@ -296,6 +321,14 @@ EXERCISES = [
         hint="Stay in the Bernstein basis (Wilkinson-type roots defeat the power basis): subdivide, drop pieces "
         "whose coefficients all have one sign, refine pieces with one sign change by bisection or Newton, and "
         "return each root once, sorted, mapped to the interval.",
+        rules={
+            EDGE: "Return the roots as a sorted array `(k,)`, possibly empty, **each root once**",
+            ENDS: "a coefficient $y_0=0$ or $y_n=0$ is a root at $t_0$ or $t_1$ (even when the other half of the "
+                "search finds it too, and even when it is a double root, as for $\\langle0,0,1\\rangle$).",
+            WILKINSON: "the tests include the Wilkinson-type polynomial",
+            BAD: "Raise a `ValueError` for coefficients that are not a non-empty one-dimensional array, for the "
+                "zero polynomial, for an interval without $t_0<t_1$ and for `tol` outside $(0,1)$.",
+        },
     ),
     Exercise(
         id="09.line_curve_intersection",
@@ -304,5 +337,11 @@ EXERCISES = [
         compare=close(1e-9, 1e-9),
         hint="f_i = w_i (a x_i + b y_i + c), the line dotted with the homogeneous control point; its roots in "
         "[0, 1] are the parameters, and the points are the (rational) curve evaluated there: (ts (k,), pts (k, 2)).",
+        rules={
+            EDGE: "with no intersection shapes `(0,)` and `(0, 2)`.",
+            BAD: "Raise a `ValueError` for points that are not planar `(n+1, 2)`, a line that is not three numbers "
+                "or has $a=b=0$, weights of the wrong length or with a zero, and a curve that lies on the line "
+                "($f\\equiv0$).",
+        },
     ),
 ]

@@ -240,6 +240,15 @@ EXERCISES = [
         hint="P(t) = Σ P_i L_i(t) with L_i(t) = Π_{j≠i} (t - t_j)/(t_i - t_j). Build the (k, n+1) matrix of basis "
         "values (skip j = i, or the product is 0/0), then one matrix product with the points. A number t gives (d,), "
         "k values (k, d); scalar values (n+1,) give a float or (k,). Repeated nodes are a ValueError.",
+        rules={
+            EDGE: "One node gives the constant curve $\\mathbf P(t)=\\mathbf P_0$, two nodes the straight line "
+                "through the two points.",
+            SHAPES: "`t`: a number, giving shape `(d,)` (a `float` for scalar values), or a 1-D array of k numbers, "
+                "giving `(k, d)` (or `(k,)`), also when k = 1.",
+            VALUES: "`points`: shape `(n+1, d)`, or scalar values of shape `(n+1,)`.",
+            BAD: "Raise a `ValueError` when a node repeats, when `ts` is not a non-empty 1-D array, when the number "
+                "of points differs from the number of nodes, and when `t` has two or more dimensions.",
+        },
     ),
     Exercise(
         id="10.divided_differences",
@@ -249,6 +258,12 @@ EXERCISES = [
         hint="Column k of the table holds f[t_i..t_(i+k)] = (f[t_(i+1)..t_(i+k)] - f[t_i..t_(i+k-1)]) / "
         "(t_(i+k) - t_i): the denominator spans the whole range of k+1 nodes, not neighbouring ones. Return the "
         "first entry of every column, f[t_0], f[t_0,t_1], ..., f[t_0..t_n], in the shape of `values`.",
+        rules={
+            EDGE: "Return an array of the same shape as `values`: row $k$ is $f[t_0,\\dots,t_k]$ (row 0 is "
+                "$\\mathbf P_0$).",
+            BAD: "Raise a `ValueError` for a repeated node (the table would divide by zero), for an empty `ts`, and "
+                "when the number of values differs from the number of nodes.",
+        },
     ),
     Exercise(
         id="10.newton_eval",
@@ -257,6 +272,14 @@ EXERCISES = [
         compare=close(1e-9, 1e-9),
         hint="Nest from the top: value = c_n, then value = c_k + (t - t_k) value for k = n-1 ... 0. The factor of "
         "level k uses t_k (t_n is never used, so ts may have n or n+1 entries, and nodes may repeat).",
+        rules={
+            EDGE: "The last node $t_n$ never enters the formula, so accept both $n+1$ and $n$ nodes; the nodes need "
+                "not be distinct here",
+            SHAPES: "or a 1-D array of k numbers, giving `(k, d)` (or `(k,)`), also when k = 1.",
+            VALUES: "a `float` for scalar coefficients of shape `(n+1,)`",
+            BAD: "Raise a `ValueError` when `len(ts)` is neither `len(coeffs)` nor `len(coeffs) - 1`, when `coeffs` "
+                "is not of shape `(n+1,)` or `(n+1, d)`, and when `t` has two or more dimensions.",
+        },
     ),
     Exercise(
         id="10.neville",
@@ -266,6 +289,14 @@ EXERCISES = [
         hint="Level r from level r-1: p_i = ((t_(i+r) - t) p_i + (t - t_i) p_(i+1)) / (t_(i+r) - t_i) for "
         "i = 0 ... n-r, where p_i on the right is the old value. After n levels one value is left: P(t). Work "
         "on an array (k, n+1, d) to handle k parameters at once.",
+        rules={
+            EDGE: "Parameters outside the nodes' range are allowed.",
+            SHAPES: "`t` a number, giving shape `(d,)` (a `float` for scalar values), or a 1-D array of k numbers, "
+                "giving `(k, d)` (or `(k,)`), also when k = 1.",
+            VALUES: "`points` of shape `(n+1, d)`, or scalar values of shape `(n+1,)`",
+            BAD: "Raise a `ValueError` when a node repeats, when `ts` is not a non-empty 1-D array, when the number "
+                "of points differs from the number of nodes, and when `t` has two or more dimensions.",
+        },
     ),
     Exercise(
         id="10.chebyshev_nodes",
@@ -274,6 +305,11 @@ EXERCISES = [
         compare=close(1e-12, 1e-12),
         hint="n nodes (n counts nodes): (a+b)/2 + (b-a)/2 cos((2i+1)π/(2n)) for i = 0 ... n-1, in radians, "
         "returned in increasing order. n must be an integer >= 1 and a < b.",
+        rules={
+            EDGE: "Return a 1-D array of shape `(n,)` in **increasing** order",
+            BAD: "Raise a `ValueError` when $a\\ge b$ or $n<1$, and a `ValueError` or `TypeError` when `n` is not "
+                "an integer.",
+        },
     ),
     Exercise(
         id="10.bezier_segments_needed",
@@ -283,6 +319,10 @@ EXERCISES = [
         hint="L_c = n(n-1) max_i |c_(i+2) - 2c_(i+1) + c_i| for each coordinate c (absolute values of second "
         "differences); m = ceil(sqrt(‖L‖ / (8 tol))) with ‖L‖ the Euclidean length of (L_x, L_y, ...), and at "
         "least 1. Return an int.",
+        rules={
+            EDGE: "curves of degree 0 and 1, and straight lines of any degree, need one chord.",
+            BAD: "raise a `ValueError` for `tol <= 0` and for `points` that are not a 2-D array.",
+        },
     ),
     Exercise(
         id="10.hermite_to_bezier",
@@ -291,5 +331,9 @@ EXERCISES = [
         compare=close(1e-12, 1e-12),
         hint="A cubic Bézier curve has P'(0) = 3(P1 - P0) and P'(1) = 3(P3 - P2): return the rows p0, p0 + d0/3, "
         "p1 - d1/3, p1 as an array (4, d).",
+        rules={
+            EDGE: "Each is a vector of shape `(d,)` (a list or tuple is fine), all of one dimension d.",
+            BAD: "Raise a `ValueError` when the four vectors differ in dimension or one of them is not 1-D.",
+        },
     ),
 ]

@@ -266,6 +266,11 @@ EXERCISES = [
         compare=close(1e-9, 1e-9),
         hint="Return a tuple (A, e(A)). L2: A is the mean and e(A) = Σ (A - g)², the sum (not the mean) of the "
         "squares. linf: A = (max + min) / 2 and e(A) = max |A - g| = (max - min) / 2.",
+        rules={
+            EDGE: "`values`: a 1-D list or array of at least one number.",
+            BAD: "Raise a `ValueError` if `values` is empty or not one-dimensional, or `norm` is anything other "
+                "than `\"l2\"` or `\"linf\"` (the names are case-sensitive).",
+        },
     ),
     Exercise(
         id="11.chord_length_parameters",
@@ -275,6 +280,11 @@ EXERCISES = [
         hint="One parameter per sample: s_0 = 0, then the running sum of the chord lengths ‖P_i - P_(i-1)‖ "
         "(not squared), divided by the total so the last is 1. Reject fewer than two samples and a polygon "
         "of total length 0 with a ValueError.",
+        rules={
+            EDGE: "Two equal neighbours get equal parameters (a chord of length 0 adds nothing).",
+            BAD: "Raise a `ValueError` if `points` is not two-dimensional, has fewer than two samples, or all "
+                "samples are the same point (the polygon has no length to divide by).",
+        },
     ),
     Exercise(
         id="11.least_squares_fit",
@@ -284,6 +294,13 @@ EXERCISES = [
         hint="c = len(knots) - degree + 1 control points. Build N[k, j] = B_j(s_k) (shape (M, c), with the last "
         "span closed so that s = t_(c-1) counts), then solve (NᵀN) T = NᵀP for all coordinates at once. "
         "A singular NᵀN (np.linalg.LinAlgError) must become a ValueError.",
+        rules={
+            EDGE: "`params`: `(M,)`, one per sample, in any order, each inside the domain $[t_{n-1},t_{c-1}]$ (both "
+                "ends allowed, see the note on the end of the domain above)",
+            BAD: "Raise a `ValueError` if `params` and `points` differ in length, a parameter lies outside the "
+                "domain, the knots decrease, `degree` is below 1 or there are fewer than $2n$ knots, and when the "
+                "normal equations are singular",
+        },
     ),
     Exercise(
         id="11.fairing_matrix",
@@ -293,6 +310,11 @@ EXERCISES = [
         hint="Integrate B_i''(s) B_j''(s) span by span over the domain [t_(n-1), t_(c-1)] only, skipping spans "
         "of length zero. Gauss-Legendre with n - 1 points on [a, b] is exact: nodes (a + b)/2 + (b - a)/2 x_q, "
         "weights (b - a)/2 w_q. Degree 1 has no second derivative: raise a ValueError.",
+        rules={
+            EDGE: "Return a symmetric array of shape `(c, c)`, compared to within a relative $10^{-8}$.",
+            BAD: "Raise a `ValueError` if `degree` is below 2 (a degree-1 spline has no second derivative to fair), "
+                "the knots decrease, or there are fewer than $2n$ knots.",
+        },
     ),
     Exercise(
         id="11.faired_fit",
@@ -301,6 +323,14 @@ EXERCISES = [
         compare=close(1e-7, 1e-8),
         hint="Solve (NᵀN + weight M_fair) T = NᵀP, with M_fair from your fairing_matrix. weight = 0 is the "
         "least-squares fit; a negative weight, or a positive one with degree 1, is a ValueError.",
+        rules={
+            EDGE: "With `weight = 0` the answer is the least-squares fit; as the weight grows the curve is pulled "
+                "towards a straight line.",
+            BAD: "Raise a `ValueError` if `params` and `points` differ in length, a parameter lies outside the "
+                "domain, the knots decrease, `degree` is below 1 or there are fewer than $2n$ knots, for a "
+                "negative weight, for a positive weight with `degree` 1 (there is nothing to fair), and when the "
+                "system is singular.",
+        },
     ),
     Exercise(
         id="11.constrained_fit",
@@ -310,5 +340,14 @@ EXERCISES = [
         hint="Solve [[NᵀN + weight M_fair, A], [Aᵀ, 0]] [T; Λ] = [NᵀP; Q] with A[j, i] = B_j(u_i) (c × I) and "
         "return T only (the first c rows). The targets are met exactly, not approximately: no large penalty "
         "weights. More targets than control points, or a singular system, is a ValueError.",
+        rules={
+            EDGE: "The curve must pass through the targets exactly, so treating them as samples with a large weight "
+                "is not good enough.",
+            BAD: "Raise a `ValueError` for the bad inputs of exercise 11.5 (samples and parameters of different "
+                "lengths, a parameter outside the domain, bad knots or degree, a negative weight, a positive "
+                "weight with `degree` 1), if there are more targets than control points, `targets` and "
+                "`target_params` differ in length, the targets have another dimension than the samples, a target "
+                "parameter lies outside the domain, or the block system is singular",
+        },
     ),
 ]

@@ -316,6 +316,12 @@ EXERCISES = [
         hint="[a, b] - [c, d] = [a - d, b - c]; a product is the min and max of the four products ac, ad, bc, bd; "
         "a quotient the min and max of a/c, a/d, b/c, b/d, refused with a ValueError when c <= 0 <= d. Numbers "
         "are degenerate intervals [x, x], on either side (__radd__, __rsub__, __rmul__, __rtruediv__).",
+        rules={
+            EDGE: "`+`, `-`, `*`, `/` combine an `Interval` with another `Interval`",
+            "numbers on either side": "**or with a number on either side**: a number $x$ is the degenerate interval "
+                "$[x,x]$",
+            BAD: "Dividing by an interval that contains 0 (also as an end, and the number 0) raises a `ValueError`.",
+        },
     ),
     Exercise(
         id="12.interval_de_casteljau",
@@ -324,6 +330,16 @@ EXERCISES = [
         compare=close(1e-9, 1e-9),
         hint="In centred form the affine map (1-t)[P0] + t[P1] has centre (1-t)c0 + t c1 and error "
         "|1-t| e0 + |t| e1 for every real t: run the triangle on centres and errors, then lo = c - e, hi = c + e.",
+        rules={
+            EDGE: "`boxes`: shape `(n+1, d, 2)`, any degree $n\\ge0$ and dimension $d\\ge1$; `boxes[k, j] = (lo, "
+                "hi)`.",
+            OUTSIDE: "Any real `t`: the tests use values from $-1.5$ to $3$.",
+            SHAPES: "`t`: a number, giving shape `(d, 2)`, or a 1-D array of k numbers, giving `(k, d, 2)` (also "
+                "for k = 1 and k = 0).",
+            BAD: "Raise a `ValueError` if a box has `lo > hi`, if `boxes` does not have the shape `(n+1, d, 2)` "
+                "with at least one control point, if `t` has two or more dimensions, or if an input is NaN or "
+                "infinite.",
+        },
     ),
     Exercise(
         id="12.error_curve",
@@ -332,6 +348,14 @@ EXERCISES = [
         compare=close(1e-9, 1e-9),
         hint="Σ e_k |B_k^n(t)|: the absolute value matters outside [0, 1], where the B_k^n(t) change sign "
         "with k. Reject negative errors with a ValueError.",
+        rules={
+            OUTSIDE: "Any real `t`.",
+            EDGE: "The value is the **half**-width of the box $[\\mathbf P](t)$, not its width.",
+            SHAPES: "`errors`: shape `(n+1, d)`, giving `(d,)` for a number t and `(k, d)` for k values, or shape "
+                "`(n+1,)`, giving a number (a `float`) for a number t and `(k,)` for k values.",
+            BAD: "Raise a `ValueError` if an error is negative, if `errors` is not of shape `(n+1,)` or `(n+1, d)`, "
+                "if `t` has two or more dimensions, or for NaN and infinities.",
+        },
     ),
     Exercise(
         id="12.interval_subdivide",
@@ -340,6 +364,12 @@ EXERCISES = [
         compare=close(1e-9, 1e-9),
         hint="The left piece is the left edge of the interval de Casteljau triangle from the top, the right "
         "piece the right edge from the bottom up (starting at [P](t)); errors combine as |1-t| e_i + |t| e_(i+1).",
+        rules={
+            OUTSIDE: "`t`: one real number (any, also outside $[0,1]$).",
+            EDGE: "`boxes`: shape `(n+1, d, 2)`, $n\\ge0$",
+            BAD: "Raise a `ValueError` for boxes with lo > hi or of the wrong shape, and if `t` is not a single "
+                "number.",
+        },
     ),
     Exercise(
         id="12.hermite_interval",
@@ -349,6 +379,14 @@ EXERCISES = [
         hint="Raise the Hermite interpolant of degree 2m-1 to degree 2m, then add (-1)^m [f_min, f_max] / "
         "((2m)! C(2m, m)) to the middle coefficient only (swap the ends when the factor is negative). On [a, b] "
         "the i-th derivatives scale by (b-a)^i and the bound by (b-a)^(2m).",
+        rules={
+            EDGE: "`derivs0`, `derivs1`: $f,f',\\dots,f^{(m-1)}$ at the two ends, shape `(m,)` ($m\\ge1$) for a "
+                "function, or `(m, d)` for a curve (one column per coordinate).",
+            INTERVALS: "`interval=(a, b)`: the data are derivatives with respect to $t$ at $t=a$ and $t=b$, and the "
+                "result is in the Bernstein basis of $[a,b]$.",
+            BAD: "Raise a `ValueError` if `derivs0` and `derivs1` differ in shape or are empty, if `bound` has the "
+                "wrong shape or lo > hi, if `interval` is not `(a, b)` with `a < b`, and for NaN and infinities.",
+        },
     ),
     Exercise(
         id="12.derivative_bounds",
@@ -357,5 +395,11 @@ EXERCISES = [
         compare=close(1e-9, 1e-9),
         hint="f^(r) = n!/(n-r)! Σ Δ^r p_k B_k^(n-r): its bounds are n!/(n-r)! times the min and max of the r-th "
         "forward differences, per coordinate (columns). For r > n the derivative is 0.",
+        rules={
+            EDGE: "`r`: an integer $\\ge0$; `r = 0` bounds $f$ itself, and for `r > n` the derivative is $0$: `[0, "
+                "0]`.",
+            BAD: "Raise a `ValueError` (or `TypeError`) if `r` is negative or not an integer, if `coeffs` is empty "
+                "or of the wrong shape, and for NaN and infinities.",
+        },
     ),
 ]

@@ -220,6 +220,12 @@ EXERCISES = [
         compare=exact(),
         hint="Split at '|': one sign bit, then the exponent (its first bit the sign, the rest its magnitude, most "
         "significant first), then f_1 f_2 ... worth 1/2, 1/4, ...; b = (-1)^s f 2^e. No bias, no hidden bit.",
+        rules={
+            EDGE: "decode any fraction by the formula (`0|0000|0101` is $5/16$, and an all-zero fraction is 0).",
+            BAD: "Raise a `TypeError` if `bits` is not a string, and a `ValueError` unless it has exactly three "
+                "fields, each non-empty and made of `0` and `1` only (no spaces), with a sign field of exactly one "
+                "bit and an exponent field of at least two bits (its sign and one magnitude bit).",
+        },
     ),
     Exercise(
         id="13.round_to_bits",
@@ -228,6 +234,12 @@ EXERCISES = [
         compare=exact(),
         hint="Write x = f 2^e with 1/2 <= |f| < 1 (numpy.frexp), round f 2^d to an integer with ties to even "
         "(numpy.rint) and scale back by 2^(e-d) (numpy.ldexp). Rounding is relative to x's own exponent.",
+        rules={
+            TIES: "to nearest with ties to even",
+            EDGE: "Zero gives zero; very small and very large floats (1e-300, 1e20) must work.",
+            BAD: "Raise a `TypeError` if `d` is not an integer (`2.5`) or `x` is not numbers (a string), and a "
+                "`ValueError` if $d<1$.",
+        },
     ),
     Exercise(
         id="13.float_interval",
@@ -236,6 +248,14 @@ EXERCISES = [
         compare=exact(),
         hint="With b = f 2^e, 1/2 <= |f| < 1, the neighbours are 2^(e-d) away, so b ± 2^(e-d-1); with exact=True "
         "and |f| = 1/2 the neighbour towards 0 is only 2^(e-d-1) away, so that side is 2^(e-d-2).",
+        rules={
+            EDGE: "return this symmetric interval by default.",
+            TIES: "At a power of two ($|f|=\\tfrac12$) the neighbour **towards zero** has the smaller exponent "
+                "$e-1$ and is only $2^{e-d-1}$ away.",
+            BAD: "Raise a `ValueError` if `b` is not a single number, if `b` has more than $d$ significant bits (it "
+                "is not a $d$-bit number: `float_interval(0.3, 4)`), or if `d` is not an integer with $1\\le d\\le "
+                "50$.",
+        },
     ),
     Exercise(
         id="13.affine_roundoff",
@@ -244,6 +264,13 @@ EXERCISES = [
         compare=close(1e-12, 1e-300),
         hint="η(|1-t||p0| + |t||p1| + |(1-t)p0 + t p1|), with absolute values per coordinate: the notes' three "
         "cases of (13.7) are this one formula.",
+        rules={
+            EDGE: "`eta`: a number $\\ge0$ (0 gives no widening).",
+            SHAPES: "`t`: any real number, giving the shape of `p0` (a float for numbers), or a 1-D array of k "
+                "numbers, giving `(k,)` for numbers and `(k, dim)` for vectors.",
+            BAD: "Raise a `ValueError` if `p0` and `p1` have different shapes or more than one dimension, if `t` "
+                "has two or more dimensions, or if `eta` is negative.",
+        },
     ),
     Exercise(
         id="13.rounded_de_casteljau",
@@ -253,5 +280,19 @@ EXERCISES = [
         hint="Round the points to d bits and start the radii at |P - fl(P)| (+ radii). Each step: s = fl(1 - t), "
         "c = fl(fl(s a) + fl(t b)), radius |1-t| ea + |t| eb + γ(w|1-t||a| + |t||b| + |c|), γ = η/(1-η), "
         "w = 1 when s is exactly 1 - t, else 2.",
+        rules={
+            FLOAT32: "$d=-\\log_2\\eta$ must be an integer with $2\\le d\\le25$ (simulated: every result rounded "
+                "with your `round_to_bits(·, d)`)",
+            FLOAT64: "or $d=53$ (ordinary floats, where rounding changes nothing).",
+            EDGE: "`points`: shape `(n+1, dim)`, any $n\\ge0$ and `dim` ≥ 1",
+            COARSE: "$d=-\\log_2\\eta$ must be an integer with $2\\le d\\le25$",
+            BOXES: "(plus `radii[k]` when `radii` is given: boxes around the points, as in chapter 12)",
+            SHAPES: "`t`: a number, giving `(centre (dim,), radius (dim,))`, or a 1-D array of k numbers, giving "
+                "`((k, dim), (k, dim))`",
+            BAD: "Raise a `ValueError` if `eta` is not $2^{-d}$ with $2\\le d\\le25$ or $d=53$, if a parameter has "
+                "more than $d$ significant bits (for instance `0.1` with $\\eta=2^{-24}$), if `t` has two or more "
+                "dimensions, if `points` is not of shape `(n+1, dim)`, or if `radii` has another shape or a "
+                "negative entry.",
+        },
     ),
 ]

@@ -237,8 +237,6 @@ def freeze_cases(rng):
     return cases
 
 
-BAD_INPUT_RULE = {BAD: "bad input raises a ValueError or TypeError (see the statement's list)"}
-
 EXERCISES = [
     Exercise(
         id="14.ffd_parameters",
@@ -247,7 +245,13 @@ EXERCISES = [
         compare=close(1e-12, 1e-12),
         hint="s = (x - xmin)/(xmax - xmin) and t = (y - ymin)/(ymax - ymin), with box = [[xmin, ymin], [xmax, ymax]]: "
         "subtract the lower corner, divide by the box's width and height (not by xmax). One point (2,) gives (2,).",
-        rules=BAD_INPUT_RULE,
+        rules={
+            EDGE: "Points outside the box are allowed: they get values outside $[0, 1]$.",
+            SHAPES: "`points`: shape `(k, 2)`, giving shape `(k, 2)` (also for k = 0 and k = 1), or a single point "
+                "of shape `(2,)`, giving `(2,)`.",
+            BAD: "Raise a `ValueError` for a box that breaks the conventions and for points of any other shape "
+                "(three coordinates, for instance).",
+        },
     ),
     Exercise(
         id="14.identity_lattice",
@@ -256,7 +260,12 @@ EXERCISES = [
         compare=close(1e-12, 1e-12),
         hint="lattice[i, j] = (xmin + i/m (xmax - xmin), ymin + j/n (ymax - ymin)) for i = 0..m, j = 0..n: shape "
         "(m+1, n+1, 2), the first index along x.",
-        rules=BAD_INPUT_RULE,
+        rules={
+            EDGE: "Return an array of shape `(m+1, n+1, 2)` with `lattice[i, j]` $=\\mathbf P_{ij}$ (the first "
+                "index along $x$).",
+            BAD: "Raise a `ValueError` (or `TypeError`) when `m` or `n` is not an integer $\\ge1$ (0, -1, 2.5) and "
+                "for a bad box.",
+        },
     ),
     Exercise(
         id="14.ffd",
@@ -266,7 +275,14 @@ EXERCISES = [
         hint="For each point inside the closed box: (s, t), then (X, Y, W) = Σ_i Σ_j B_i^m(s) B_j^n(t) w_ij (x_ij, "
         "y_ij, 1) with m = lattice.shape[0] - 1 along s and n = lattice.shape[1] - 1 along t, and the point "
         "(X/W, Y/W). Points outside are returned as they are; do not modify the input.",
-        rules={**BAD_INPUT_RULE, OUTSIDE: "points outside the box are unchanged; points on its boundary are inside"},
+        rules={
+            EDGE: "`lattice`, `box`, `weights` as in the conventions; `weights=None` means all weights 1.",
+            OUTSIDE: "**Points outside the box are returned unchanged.** The box is *closed*: a point on its "
+                "boundary ($s$ or $t$ equal to 0 or 1) is inside and is deformed.",
+            SHAPES: "`points`: `(k, 2)` giving `(k, 2)` (also for k = 0), or one point `(2,)` giving `(2,)`.",
+            BAD: "Raise a `ValueError` for a lattice that is not `(m+1, n+1, 2)` with $m,n\\ge1$, for weights of "
+                "the wrong shape or with a zero or negative entry, for points of the wrong shape and for a bad box.",
+        },
     ),
     Exercise(
         id="14.isoline_image",
@@ -276,7 +292,13 @@ EXERCISES = [
         hint="direction 's': H_j = Σ_i B_i^m(value) w_ij (x_ij, y_ij, 1) for each row j (a point on the row's degree-m "
         "curve, in homogeneous coordinates); return (H_j's (X/W, Y/W), H_j's W): n+1 of each. Direction 't': the "
         "same along the columns, V_i = Σ_j B_j^n(value) w_ij (x_ij, y_ij, 1).",
-        rules=BAD_INPUT_RULE,
+        rules={
+            EDGE: "`weights=None` means all weights 1 (and then the returned weights are all 1).",
+            SHAPES: "`value`: a number in $[0, 1]$, or a 1-D array of k such numbers, giving shapes `(k, n+1, 2)` "
+                "and `(k, n+1)` (also for k = 0 and k = 1).",
+            BAD: "Raise a `ValueError` for a value outside $[0, 1]$ (that line misses the box), for a direction "
+                "other than `\"s\"` and `\"t\"`, and for a bad lattice or bad weights as in exercise 14.3.",
+        },
     ),
     Exercise(
         id="14.freeze",
@@ -286,6 +308,11 @@ EXERCISES = [
         hint="order k resets k+1 rows (C⁰: 1 row): 'bottom' rows j = 0..k, 'top' j = n-k..n, 'left' columns "
         "i = 0..k, 'right' i = m-k..m, to their identity-lattice positions and their weights to 1; return new "
         "arrays (lattice, weights), with weights all ones when none were given.",
-        rules=BAD_INPUT_RULE,
+        rules={
+            EDGE: "freezing every row gives back the identity lattice.",
+            RATIONAL: "The frozen weights must be 1",
+            BAD: "Raise a `ValueError` for an unknown edge, for an order out of range (negative, or more rows than "
+                "the lattice has; a non-integer may raise a `TypeError`), and for a bad lattice, box or weights.",
+        },
     ),
 ]

@@ -39,8 +39,6 @@ PLANAR_QUARTIC = [(0.0, 0.0), (1.0, 3.0), (3.0, -1.0), (5.0, 2.0), (6.0, 0.0)]
 SADDLE = [[(0.0, 0.0, 0.0), (0.0, 1.0, 0.0)], [(1.0, 0.0, 0.0), (1.0, 1.0, 1.0)]]
 TS = np.linspace(0.0, 1.0, 9)
 
-RULES = {BAD: "bad input raises a ValueError or TypeError"}
-
 
 def _curve(rng, low=1, high=7, rational=True):
     n = int(rng.integers(low, high + 1))
@@ -216,7 +214,12 @@ EXERCISES = [
         cases=split_qr_cases,
         compare=close(1e-12, 1e-12),
         hint="Lift every control point to w_i (P_i, 1) first; Q is the first n of them, R the last n.",
-        rules=RULES,
+        rules={
+            POLYNOMIAL: "for `weights=None` that column holds ones.",
+            EDGE: "`weights`: `None` (every weight 1) or `n+1` nonzero numbers (negative ones are allowed).",
+            BAD: "Raise a `ValueError` if `points` is not of shape `(n+1, d)` with $n\\ge1$ (a single point has no "
+                "$\\mathbf Q$ and $\\mathbf R$), if a weight is zero, or if the number of weights is not `n+1`.",
+        },
     ),
     Exercise(
         id="16.curve_point_derivative",
@@ -225,7 +228,16 @@ EXERCISES = [
         compare=close(1e-9, 1e-9),
         hint="p = Π((1 - t) Q + t R) and p' = n Q_w R_w / P_w² (Π(R) - Π(Q)): the direction r - q, and a "
         "length that depends on the weights of Q, R and P at t. Evaluate Q and R in a form that works at t = 1.",
-        rules=RULES,
+        rules={
+            POLYNOMIAL: "`weights`: `None` or `n+1` nonzero numbers.",
+            EDGE: "The tests use $t$ in $[-\\tfrac12, \\tfrac32]$, including $t=0$, $t=\\tfrac12$, $t=1$ and "
+                "$t=1-10^{-13}$",
+            NEAR_ONE: "evaluate $\\mathbf Q$ and $\\mathbf R$ by a method that works there",
+            SHAPES: "`t`: a number, giving two arrays of shape `(d,)`, or a 1-D array of k numbers, giving two "
+                "arrays `(k, d)`.",
+            BAD: "Raise a `ValueError` if `points` is not `(n+1, d)`, if a weight is zero or their number is wrong, "
+                "if `t` has two or more dimensions, and where $P_w(t)=0$",
+        },
     ),
     Exercise(
         id="16.pseudo_horner",
@@ -234,7 +246,15 @@ EXERCISES = [
         compare=close(1e-10, 1e-12),
         hint="For t < 1/2: (1 - t)^N Σ C(N, i) c_i u^i with u = t / (1 - t). For t >= 1/2: t^N Σ C(N, i) c_(N-i) u^i "
         "with u = (1 - t) / t. Choose the form parameter by parameter.",
-        rules=RULES,
+        rules={
+            EDGE: "`t`: a number or a 1-D array of k numbers, any real values.",
+            NEAR_ONE: "The tests include $t=1$, $t=1-10^{-15}$, and degree 40 at $t=1-10^{-8}$: every result must "
+                "be finite and right to within a relative $10^{-10}$ (or an absolute $10^{-12}$).",
+            SHAPES: "For `(N+1,)` coefficients return a float for a number and shape `(k,)` for an array; for "
+                "`(N+1, d)` return `(d,)` and `(k, d)`.",
+            BAD: "Raise a `ValueError` if `coeffs` is empty or has more than two dimensions, or if `t` has two or "
+                "more dimensions.",
+        },
     ),
     Exercise(
         id="16.sub_patches",
@@ -243,7 +263,13 @@ EXERCISES = [
         compare=close(1e-12, 1e-12),
         hint="Work on the homogeneous net H[i, j] = w_ij (P_ij, 1), shape (m+1, n+1, d+1); P^kl is H[k:k+m, l:l+n], "
         "k along s (the first index), l along t.",
-        rules=RULES,
+        rules={
+            POLYNOMIAL: "ones for `weights=None`",
+            EDGE: "`points`: shape `(m+1, n+1, d)` with $m\\ge1$ and $n\\ge1$; `weights`: `None` or shape `(m+1, "
+                "n+1)`, nonzero (negative allowed).",
+            BAD: "Raise a `ValueError` if `points` does not have three dimensions, if $m=0$ or $n=0$ (no "
+                "sub-patches), if a weight is zero, or if `weights` does not have the shape `(m+1, n+1)`.",
+        },
     ),
     Exercise(
         id="16.patch_point_tangents",
@@ -253,6 +279,14 @@ EXERCISES = [
         hint="Blend the four sub-patch values in t to get A (from P^00, P^01) and B (from P^10, P^11), the Q and R "
         "of the s-iso-curve: p_s = m A_w B_w / P_w² (Π(B) - Π(A)). Blend in s for p_t, with n. Never take the tangents "
         "from the four points Π(S^kl) themselves.",
-        rules=RULES,
+        rules={
+            EDGE: "`points`: shape `(m+1, n+1, d)` with $m, n\\ge1$; `weights`: `None` or `(m+1, n+1)`, nonzero.",
+            POLYNOMIAL: "`weights`: `None` or `(m+1, n+1)`, nonzero.",
+            NEAR_ONE: "The tests use $s, t$ in $[0, 1]$, including 0, 1 and $1-10^{-12}$.",
+            SHAPES: "`s`, `t`: numbers, or 1-D arrays that broadcast together (equal lengths, or one of them a "
+                "number): two numbers give three arrays of shape `(d,)`, k pairs three arrays `(k, d)`.",
+            BAD: "Raise a `ValueError` if `points` does not have three dimensions, if a weight is zero or `weights` "
+                "has the wrong shape, if `s` and `t` do not broadcast together, and where $P_w(s,t)=0$.",
+        },
     ),
 ]

@@ -314,6 +314,12 @@ EXERCISES = [
         hint="Build the Sylvester matrix: n = deg g rows of f's coefficients from the highest power down, each "
         "shifted one column right, then m = deg f rows of g's; its determinant is Res(f, g). Drop trailing zeros "
         "first; a constant c gives c^(deg of the other).",
+        rules={
+            EDGE: "A constant counts as degree 0: $\\operatorname{Res}(c, g)=c^{\\deg g}$, $\\operatorname{Res}(f, "
+                "c)=c^{\\deg f}$, and two constants give 1.",
+            BAD: "Raise a `ValueError` for the zero polynomial (all coefficients zero), an empty array, an array "
+                "that is not 1-D, or NaN/infinite coefficients.",
+        },
     ),
     Exercise(
         id="17.bezout_matrix",
@@ -322,6 +328,12 @@ EXERCISES = [
         compare=close(1e-9, 1e-9),
         hint="With brackets (a_k b_m) = a_k b_m - a_m b_k, entry (r, c) is L_{i,j} with i = n-1-r, j = n-1-c: "
         "the sum of (a_k b_m) over m <= min(i, j), k = i + j + 1 - m <= n. Pad the lower degree with zeros.",
+        rules={
+            EDGE: "`f`, `g`: ascending coefficients; trailing zeros dropped first. The result has shape `(n, n)` "
+                "(`(0, 0)` for two constants) and is symmetric.",
+            BAD: "Raise a `ValueError` for the zero polynomial, arrays that are not 1-D, or NaN/infinite "
+                "coefficients.",
+        },
     ),
     Exercise(
         id="17.poly_gcd",
@@ -331,6 +343,12 @@ EXERCISES = [
         hint="Divide, keep divisor and remainder, repeat until the remainder is zero; in floating point a "
         "remainder coefficient below 1e-9 times the largest coefficient of that step counts as zero. Return the "
         "last nonzero remainder divided by its leading coefficient.",
+        rules={
+            EDGE: "No common root: return `[1.0]`. One argument the zero polynomial: the GCD is the other one, made "
+                "monic. Scaling $f$ or $g$ by a constant changes nothing.",
+            BAD: "Raise a `ValueError` if both are the zero polynomial, for arrays that are not 1-D and for "
+                "NaN/infinity.",
+        },
     ),
     Exercise(
         id="17.implicitize",
@@ -340,6 +358,12 @@ EXERCISES = [
         hint="l_ij = C(n,i) C(n,j) (H_i × H_j) with H_i = w_i (x_i, y_i, 1) is the line a x + b y + c; the "
         "matrix entry L_{i,j} sums l_km over m <= min(i, j), k = i + j + 1 - m <= n, and f = det L, expanded "
         "as a polynomial (a determinant of linear forms). Entry c[i, j] multiplies x^i y^j.",
+        rules={
+            RATIONAL: "Weights may be negative (not zero).",
+            EDGE: "Collinear control points give a power of the line; that is fine.",
+            BAD: "Raise a `ValueError` for points that are not `(n+1, 2)` with $n\\ge1$, for a zero weight or the "
+                "wrong number of weights, for NaN/infinity, and when the determinant vanishes identically",
+        },
     ),
     Exercise(
         id="17.invert",
@@ -349,6 +373,14 @@ EXERCISES = [
         hint="For a quadratic t = l20 / (l20 - l21) or l10 / (l10 - l20) (each fails at one end); for a cubic "
         "the row operation of (17.13) gives t = l_b / (l_b - l_a). Any degree: t is the common real root of "
         "X(t) - x W(t) and Y(t) - y W(t), the root of their GCD. 0/0 (two roots) is a double point: ValueError.",
+        rules={
+            RATIONAL: "The tests give points $\\mathbf P(t)$ for $t$ anywhere in $[-0.5, 2.5]$, not only in "
+                "$[0,1]$, on curves of degree 1 to 4.",
+            EDGE: "The tests give points $\\mathbf P(t)$ for $t$ anywhere in $[-0.5, 2.5]$, not only in $[0,1]$",
+            SHAPES: "`xy`: a point of shape `(2,)`, giving a float, or `k` points `(k, 2)`, giving an array `(k,)`.",
+            BAD: "Raise a `ValueError` for `points` not of shape `(n+1, 2)`, a zero weight, `xy` of another shape, "
+                "NaN/infinity.",
+        },
     ),
     Exercise(
         id="17.intersect_implicit",
@@ -358,5 +390,12 @@ EXERCISES = [
         hint="Substitute Q's homogeneous coordinates into P's implicit equation, homogenised: "
         "Σ c_ij X^i Y^j W^(m-i-j) (rational Q needs the W powers). Keep the roots u in [0, 1], invert Q(u) on "
         "P and keep t in [0, 1]; one row per intersection, rows (t, u) sorted by t.",
+        rules={
+            EDGE: "A tangency (a double root of $g$) is **one** row.",
+            RATIONAL: "points that are not `(n+1, 2)` with $n\\ge1$, a zero weight or the wrong number of weights",
+            BAD: "Raise a `ValueError` when $g$ vanishes identically (the curves lie on one implicit curve: "
+                "infinitely many common points), and for bad points or weights as in exercise 17.4: points that "
+                "are not `(n+1, 2)` with $n\\ge1$, a zero weight or the wrong number of weights, NaN/infinity.",
+        },
     ),
 ]

@@ -264,8 +264,6 @@ def tangent_moving_line_cases(rng):
     return cases
 
 
-SHAPE_RULES = {BAD: "points (n+1, 2) with n >= 1, weights None or n+1 nonzero numbers; else a ValueError"}
-
 EXERCISES = [
     Exercise(
         id="18.product_moving_line",
@@ -274,7 +272,11 @@ EXERCISES = [
         compare=close(1e-9, 1e-9),
         hint="L_k = Σ_{i+j=k} C(m,i) C(n,j) P_i × Q_j / C(m+n,k), k = 0..m+n, in the order P × Q. Check that "
         "Σ B_k^(m+n)(t) L_k equals P(t) × Q(t) at a few t.",
-        rules={BAD: "p and q are (k+1, 3) arrays of triples, not all zero; else a ValueError"},
+        rules={
+            EDGE: "Degree 0 ($m=0$ or $n=0$, a fixed point) is allowed.",
+            BAD: "Raise a ValueError if p or q is not a 2-D array with 3 columns and at least one row, or has all "
+                "entries zero (that is no point and no line).",
+        },
     ),
     Exercise(
         id="18.conic_from_pencils",
@@ -283,8 +285,10 @@ EXERCISES = [
         compare=close(1e-9, 1e-9),
         hint="P0 = l00 × l10, P1 = (l00 × l11 + l01 × l10) / 2, P2 = l01 × l11, homogeneous (X, Y, W): the "
         "product of the pencils (1-t) l00 + t l01 and (1-t) l10 + t l11.",
-        rules={BAD: "a pencil that is one line, or two pencils about one axis, or a line that is not 3 numbers "
-               "(or is (0, 0, 0)): a ValueError"},
+        rules={
+            EDGE: "a $W=0$ (a control point at infinity) is a valid answer.",
+            BAD: "Raise a ValueError if a line is not 3 numbers or is $(0,0,0)$; if a pencil is a single line",
+        },
     ),
     Exercise(
         id="18.bezout_moving_lines",
@@ -293,7 +297,13 @@ EXERCISES = [
         compare=close(1e-9, 1e-9),
         hint="L_ij = Σ C(n,l) C(n,m) P_l × P_m over l <= min(i, j) and l + m = i + j + 1 (m <= n), with "
         "homogeneous P_i = w_i (x_i, y_i, 1) and the smaller index first in the cross product.",
-        rules=SHAPE_RULES,
+        rules={
+            EDGE: "For a line ($n=1$) it is the single entry $\\mathbf P_0\\times\\mathbf P_1$.",
+            RATIONAL: "`weights`: `None` (a polynomial curve) or `n+1` nonzero numbers, negative ones allowed; a "
+                "rational curve is handled through its homogeneous points $w_i(x_i,y_i,1)$.",
+            BAD: "Raise a `ValueError` if `points` is not of shape `(n+1, 2)` with $n\\ge1$, or if a weight is zero "
+                "or their number is not `n+1`.",
+        },
     ),
     Exercise(
         id="18.cubic_double_point",
@@ -303,8 +313,13 @@ EXERCISES = [
         hint="Combine the three rows of the 3×3 matrix so that the leading line vanishes (a null vector of the "
         "3×3 matrix of leading lines), drop that zero entry: the pencil left has the double point as its axis, "
         "the cross product of its two lines. Keep it homogeneous: it may be at infinity.",
-        rules={BAD: "4 planar control points of a true cubic (not collinear, not a raised conic), nonzero weights; "
-               "else a ValueError"},
+        rules={
+            EDGE: "the double point may be at infinity ($W=0$), as for $y=x^3$.",
+            RATIONAL: "`weights`: `None` (a polynomial curve) or 4 nonzero numbers, negative ones allowed; a "
+                "rational curve is handled through its homogeneous points $w_i(x_i,y_i,1)$.",
+            BAD: "Raise a ValueError unless points has shape (4, 2) and weights is None or 4 nonzero numbers, and "
+                "when the curve is not a true cubic",
+        },
     ),
     Exercise(
         id="18.moving_line_implicit",
@@ -313,8 +328,13 @@ EXERCISES = [
         compare=same_up_to_scale(1e-7),
         hint="c[i, j] is the coefficient of x^i y^j, shape (n+1, n+1). The resultant of two moving lines, or the "
         "determinant of the n×n matrix of moving lines at (x, y, 1), gives it; scale does not matter.",
-        rules={BAD: "planar points (n+1, 2), n >= 1, nonzero weights, and a curve whose equation does not vanish "
-               "identically; else a ValueError"},
+        rules={
+            EDGE: "For $n=1$ return the line: c[0, 0] = c, c[1, 0] = a, c[0, 1] = b.",
+            RATIONAL: "`weights`: `None` (a polynomial curve) or `n+1` nonzero numbers, negative ones allowed; a "
+                "rational curve is handled through its homogeneous points $w_i(x_i,y_i,1)$.",
+            BAD: "Raise a ValueError if points is not of shape (n+1, 2) with $n\\ge1$, if a weight is zero or their "
+                "number is not n+1, and when the equation vanishes identically",
+        },
     ),
     Exercise(
         id="18.tangent_moving_line",
@@ -323,6 +343,12 @@ EXERCISES = [
         compare=close(1e-9, 1e-9),
         hint="P × P' = n A × B with A, B the degree-(n-1) curves of P_0..P_(n-1) and P_1..P_n (homogeneous): the "
         "product formula of 18.product_moving_line, times n. It has 2n - 1 control lines, not 2n.",
-        rules=SHAPE_RULES,
+        rules={
+            EDGE: "exactly $n$ times the product's control lines (not rescaled)",
+            RATIONAL: "Use the homogeneous points $w_i(x_i,y_i,1)$: for a rational curve the Cartesian points give "
+                "another line.",
+            BAD: "Raise a `ValueError` if `points` is not of shape `(n+1, 2)` with $n\\ge1$, or if a weight is zero "
+                "or their number is not `n+1`.",
+        },
     ),
 ]

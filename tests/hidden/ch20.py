@@ -243,6 +243,12 @@ EXERCISES = [
         hint="Multiply H(t) = R(t) by the weight function and compare the coefficients of (1-t)^(n+r-k) t^k: "
         "k < m gives P_0..P_(m-1) (20.4) upwards from P_0 = R_0, k > m + r gives P_n..P_(m+1) (20.5) downwards "
         "from P_n = R_r, k = m..m+r gives M_0..M_r (20.6), skipping j = i. Keep the weights w_j in every sum.",
+        rules={
+            EDGE: "`degree`: an integer $n\\ge2$; `m`: an integer with $0<m<n$, or `None` for $m=\\lfloor "
+                "n/2\\rfloor$.",
+            BAD: "Raise a ValueError (or TypeError) if degree $<2$, if m is not between $1$ and $n-1$, if a weight "
+                "is zero or negative or their number is not r+1, or if points is not a 2-D array.",
+        },
     ),
     Exercise(
         id="20.area_matrix",
@@ -251,6 +257,10 @@ EXERCISES = [
         compare=close(1e-12, 1e-14),
         hint="A_ij = ∫ B_i^n (B_j^n)' dt = n ∫ B_i^n (B_(j-1)^(n-1) - B_j^(n-1)) dt, with B_(-1)^(n-1) = "
         "B_n^(n-1) = 0 and ∫ B_a^p B_b^q = C(p,a) C(q,b) / (C(p+q,a+b) (p+q+1)). Check: A + Aᵀ = diag(-1, 0, ..., 1).",
+        rules={
+            EDGE: "`n = 0` (a constant curve, $x'=0$) gives `[[0.0]]`; `n = 1` is the trapezoid.",
+            BAD: "Raise a ValueError for a negative n and a TypeError (or ValueError) when n is not an integer.",
+        },
     ),
     Exercise(
         id="20.sector_area",
@@ -259,6 +269,10 @@ EXERCISES = [
         compare=close(1e-10, 1e-12),
         hint="½∫(x dy - y dx) = Σ_{i<j} A_ij (x_i y_j - x_j y_i) with A the area matrix; counterclockwise about "
         "the origin is positive. One point sweeps nothing.",
+        rules={
+            EDGE: "(a single point sweeps nothing: 0.0)",
+            BAD: "Raise a ValueError if points is not of shape (n+1, 2) with at least one point.",
+        },
     ),
     Exercise(
         id="20.revolution_volume",
@@ -267,6 +281,10 @@ EXERCISES = [
         compare=close(1e-10, 1e-12),
         hint="π∫ y² dx = 2π Ix with Ix = ½ Σ T_ijk y_i y_j x_k, T_ijk = ∫ B_i^n B_j^n (B_k^n)' dt: or multiply the "
         "Bernstein polynomials y·y·x' and take the mean of the product's coefficients.",
+        rules={
+            EDGE: "positive where $x$ increases (even below the axis, as $y^2\\ge0$), negative where it decreases.",
+            BAD: "Raise a ValueError if points is not of shape (n+1, 2).",
+        },
     ),
     Exercise(
         id="20.bezier_area",
@@ -277,5 +295,12 @@ EXERCISES = [
         "t = 1/2 on the homogeneous control points until each piece's error bound (20.27) is at most tol times "
         "its parameter length, then add the pieces' polynomial areas. Refuse tol <= 0 and tol below "
         "1e-13 · max|coordinate|².",
+        rules={
+            EDGE: "`points`: shape `(r+1, 2)`, $r\\ge0$ (a single point has area `0.0`); `weights`: `None` or `r+1` "
+                "positive numbers.",
+            BAD: "Raise a ValueError if tol is not positive, or if it is smaller than $10^{-13}\\cdot s^2$ with $s$ "
+                "the largest absolute coordinate of the control points (double precision cannot guarantee it), if "
+                "a weight is zero or negative or their number is not r+1, or if points is not of shape (r+1, 2).",
+        },
     ),
 ]

@@ -256,8 +256,6 @@ def projective_weights_cases(rng):
     return cases
 
 
-RULES = {BAD: "raise a ValueError (or TypeError) for a degenerate quad, bad shapes, or the cases the statement names"}
-
 EXERCISES = [
     Exercise(
         id="21.bilinear_inverse",
@@ -268,7 +266,11 @@ EXERCISES = [
         "(e×g) s² + (e×f - h×g) s - h×f = 0, then t from s (or, when the edges s = 0 and s = 1 are parallel, "
         "the same with the roles of s and t exchanged). Every real root counts, sorted by s; a trapezoid's "
         "equation is linear.",
-        rules=RULES,
+        rules={
+            EDGE: "Every real pre-image counts: $s$ and $t$ are not restricted to $[0,1]$.",
+            BAD: "Raise a ValueError for a bad quad (see the conventions), if point does not have shape (2,), and "
+                "if the point has infinitely many pre-images",
+        },
     ),
     Exercise(
         id="21.pencil_axes",
@@ -277,7 +279,10 @@ EXERCISES = [
         compare=same_points_up_to_scale,
         hint="As = (Q00 × Q01) × (Q10 × Q11): the meet of the edges s = 0 and s = 1; At = (Q00 × Q10) × (Q01 × Q11), "
         "with Qij = (xij, yij, 1). Keep the homogeneous triples: parallel edges meet at infinity (W = 0).",
-        rules=RULES,
+        rules={
+            EDGE: "where edges are parallel the axis is at infinity, $W=0$",
+            BAD: "Raise a ValueError for a bad quad (see the conventions).",
+        },
     ),
     Exercise(
         id="21.birational_weight",
@@ -287,7 +292,11 @@ EXERCISES = [
         hint="w00 w11 C10 C01 = w10 w01 C00 C11 with the signed corner determinants C00 = |Q01 Q00 Q10|, "
         "C10 = |Q00 Q10 Q11|, C11 = |Q10 Q11 Q01|, C01 = |Q11 Q01 Q00|: keep their signs (a concave corner "
         "gives a negative weight).",
-        rules=RULES,
+        rules={
+            EDGE: "**Keep the signs** of the determinants",
+            BAD: "Raise a ValueError for a bad quad, if weights does not have shape (2, 2), if $w_{00}$, $w_{10}$ "
+                "or $w_{01}$ is zero, and if no $w_{11}$ can satisfy the condition",
+        },
     ),
     Exercise(
         id="21.birational_inverse",
@@ -297,7 +306,11 @@ EXERCISES = [
         hint="s = |As Q̃01 P| / (|As Q̃01 P| - |As Q̃11 P|) or, when that is 0/0, |As Q̃00 P| / (|As Q̃00 P| - "
         "|As Q̃10 P|), with the weighted Q̃ij = wij Qij and the homogeneous axis As; t the same with At, "
         "Q̃10, Q̃11 (or Q̃00, Q̃01).",
-        rules=RULES,
+        rules={
+            EDGE: "(zeros allowed: the collinear case has $w_{11}=0$)",
+            BAD: "Raise a ValueError for a bad quad; if weights does not have shape (2, 2) or is all zeros; if the "
+                "weights are not birational",
+        },
     ),
     Exercise(
         id="21.projective_weights",
@@ -306,6 +319,9 @@ EXERCISES = [
         compare=close(1e-9, 1e-12),
         hint="w00 : w10 : w01 : w11 = |Q10 Q01 Q11| : |Q00 Q01 Q11| : |Q00 Q11 Q10| : |Q00 Q01 Q10| (signed "
         "determinants of the other three corners), divided by the first so that w00 = 1.",
-        rules=RULES,
+        rules={
+            EDGE: "Keep the signs (a non-convex or twisted quad has negative weights).",
+            BAD: "Raise a ValueError for a bad quad and when three corners are collinear",
+        },
     ),
 ]
