@@ -32,8 +32,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validation import as_count, as_float_array, as_parameter, as_points
-from .bezier import bernstein_matrix, elevate, to_homogeneous
+from ._validation import as_count, as_float_array, as_interval, as_parameter, as_points, as_scalar
+from .bezier import bernstein_matrix, elevate, subdivide, to_homogeneous
+from .bspline import basis_matrix, bezier_segments, de_boor, insert_knot
+from .continuity import continuity
 from .forward_differencing import forward_difference_eval
 from .polynomials import BLOCK, _binomials, bernstein_horner, bernstein_to_power, horner
 
@@ -50,6 +52,29 @@ __all__ = [
     "curve_point_derivative",
     "sub_patches",
     "point_tangent_cost",
+    # chapter 15
+    "control_curves",
+    "iso_curve",
+    "de_casteljau_patch",
+    "patch_subdivide",
+    "subpatch",
+    "patch_elevate",
+    "corner_derivatives",
+    "second_difference_bounds",
+    "curve_tessellation_steps",
+    "tessellation_deltas",
+    "tessellation_steps",
+    "tessellate",
+    "tessellation_error",
+    "patch_continuity",
+    "nurbs_point",
+    "nurbs_insert_knot",
+    "nurbs_to_bezier",
+    "corner_curvatures",
+    "corner_fundamental_forms",
+    "principal_curvatures",
+    "surface_curvatures",
+    "triangle_corner_curvatures",
 ]
 
 # Numbers in one block of working arrays: small enough to stay in the processor's cache.
@@ -61,12 +86,12 @@ ZERO_NORMAL = 1e-12
 # --- input checking -----------------------------------------------------------------------
 
 
-def _net(points, weights) -> tuple[np.ndarray, np.ndarray | None]:
+def _net(points, weights, name: str = "points") -> tuple[np.ndarray, np.ndarray | None]:
     """The control net (m+1, n+1, d) as floats, and the weights (m+1, n+1) or None."""
-    net = as_float_array(points, "points")
+    net = as_float_array(points, name)
     if net.ndim != 3 or min(net.shape) < 1:
         raise ValueError(
-            f"points: expected a control net of shape (m+1, n+1, d), points[i, j] = P_ij, got shape {net.shape}"
+            f"{name}: expected a control net of shape (m+1, n+1, d), points[i, j] = P_ij, got shape {net.shape}"
         )
     if weights is None:
         return net, None
@@ -587,3 +612,692 @@ def point_tangent_cost(m: int, n: int, components: int = 4) -> dict[str, tuple[i
     horner_steps = 4 * d * (m * n - 1)
     interpolations = d * ((n + 1) * (m * (m + 1) // 2 - 1) + 2 * (n * (n + 1) // 2 - 1))
     return {"sub_patches": (horner_steps, horner_steps), "de_casteljau": (2 * interpolations, interpolations)}
+
+
+# === chapter 15: tensor-product surfaces ========================================================
+
+
+def _direction(direction) -> str:
+    if direction not in ("s", "t"):
+        raise ValueError(f"direction: expected 's' or 't', got {direction!r}")
+    return direction
+
+
+def _lift(points, weights) -> tuple[np.ndarray, bool]:
+    """The homogeneous net (m+1, n+1, d+1) and whether the patch came rational."""
+    net, w = _net(points, weights)
+    return _homogeneous(net, w), w is not None
+
+
+def _drop(h: np.ndarray, rational: bool) -> tuple[np.ndarray, np.ndarray | None]:
+    """A homogeneous net back to (points, weights); weights None for a polynomial patch."""
+    w = h[..., -1]
+    return h[..., :-1] / w[..., None], (w.copy() if rational else None)
+
+
+def _along(h: np.ndarray, direction: str, operation):
+    """Apply a curve operation to every s-control curve (direction "s") or every t-control curve ("t").
+
+    The curves of one direction are one curve with many coordinates: the net
+    (m+1, n+1, D) is read as m+1 points of (n+1)·D coordinates for "s", so
+    `bezier.subdivide` or `bezier.elevate` handle all of them in one call.
+    """
+    if direction == "t":
+        h = h.transpose(1, 0, 2)
+    rows, cols, dim = h.shape
+    result = operation(h.reshape(rows, cols * dim))
+    shaped = [r.reshape(len(r), cols, dim) for r in (result if isinstance(result, tuple) else (result,))]
+    if direction == "t":
+        shaped = [r.transpose(1, 0, 2) for r in shaped]
+    return tuple(np.ascontiguousarray(r) for r in shaped) if isinstance(result, tuple) else shaped[0].copy()
+
+
+def control_curves(points, direction: str = "s") -> np.ndarray:
+    """The control polygons of the s-control curves (columns) or t-control curves (rows). Notes §15.1.
+
+    points: (m+1, n+1, d). "s": the n+1 curves P_0j, ..., P_mj with parameter
+    s, shape (n+1, m+1, d); "t": the m+1 curves P_i0, ..., P_in with parameter
+    t, shape (m+1, n+1, d).
+
+    >>> from cagd_ref.surfaces import control_curves
+    >>> net = np.arange(12.0).reshape(2, 3, 2)                 # degree (1, 2) in the plane
+    >>> control_curves(net, "s").shape, control_curves(net, "s")[2].tolist()
+    ((3, 2, 2), [[4.0, 5.0], [10.0, 11.0]])
+    """
+    net, _ = _net(points, None)
+    return np.ascontiguousarray(net.transpose(1, 0, 2) if _direction(direction) == "s" else net)
+
+
+def iso_curve(points, value, direction: str = "s", weights=None) -> tuple[np.ndarray, np.ndarray | None]:
+    """Control points and weights of an iso-parameter curve, P(c, t) ("s") or P(s, c) ("t"). Notes §15.1 (15.5).
+
+    For "s" the beads Q_j(c), the points at s = c of the n+1 s-control curves
+    (de Casteljau on the homogeneous columns), are the control points of the
+    degree-n curve P(c, t) = Σ_j Q_j(c) B_j^n(t); for "t" the beads on the m+1
+    t-control curves give P(s, c). points: (m+1, n+1, d); weights None or
+    (m+1, n+1). Returns (curve points (n+1, d) or (m+1, d), weights of the
+    curve, None for a polynomial patch).
+
+    >>> from cagd_ref.surfaces import iso_curve
+    >>> saddle = [[(0, 0, 0), (0, 1, 0)], [(1, 0, 0), (1, 1, 1)]]
+    >>> iso_curve(saddle, 0.5, "s")[0].tolist()                   # the beads at s = 1/2
+    [[0.5, 0.0, 0.0], [0.5, 1.0, 0.5]]
+    """
+    h, rational = _lift(points, weights)
+    c = as_scalar(value, "value")
+    curves = h if _direction(direction) == "s" else h.transpose(1, 0, 2)
+    beads = np.einsum("i,ijd->jd", bernstein_matrix(curves.shape[0] - 1, c), curves)
+    if np.any(beads[:, -1] == 0):
+        raise ValueError(f"value: a bead of the iso-curve at {c} has weight zero (a point at infinity)")
+    return _drop(beads, rational)
+
+
+def _reduce(level: np.ndarray, ts: np.ndarray) -> np.ndarray:
+    """De Casteljau along axis 1 of (k, N+1, ...) with one parameter per row: (k, ...)."""
+    tt = ts.reshape((-1,) + (1,) * (level.ndim - 1))
+    while level.shape[1] > 1:
+        level = (1 - tt) * level[:, :-1] + tt * level[:, 1:]
+    return level[:, 0]
+
+
+def de_casteljau_patch(points, s, t, weights=None, first: str = "t") -> np.ndarray:
+    """A patch point by de Casteljau's algorithm, along t first (rows, then the beads) or s first. Notes §15.2.
+
+    first="t": every t-control curve (row) is evaluated at t, and the m+1
+    beads are the control points of the t-iso-curve P(s, t) in s, which is
+    evaluated at s; first="s": the beads on the s-control curves at s, then
+    the s-iso-curve at t. Both give `patch_point`. Shapes as in `patch_point`.
+
+    >>> from cagd_ref.surfaces import de_casteljau_patch
+    >>> saddle = [[(0, 0, 0), (0, 1, 0)], [(1, 0, 0), (1, 1, 1)]]
+    >>> de_casteljau_patch(saddle, 0.5, 0.25, first="s").tolist()
+    [0.5, 0.25, 0.125]
+    """
+    h, _ = _lift(points, weights)
+    ss, ts, scalar = _pairs(s, t)
+    if first not in ("s", "t"):
+        raise ValueError(f"first: expected 's' or 't', got {first!r}")
+    k = len(ss)
+    if first == "t":
+        beads = _reduce(np.broadcast_to(h.transpose(1, 0, 2), (k,) + h.transpose(1, 0, 2).shape), ts)
+        values = _reduce(beads, ss)
+    else:
+        values = _reduce(_reduce(np.broadcast_to(h, (k,) + h.shape), ss), ts)
+    return _finish(_project(values, ss, ts), scalar)
+
+
+def patch_subdivide(points, value=0.5, direction: str = "s", weights=None):
+    """Split a patch at s = value ("s") or t = value ("t") into two patches of the same degree. Notes §15.2.
+
+    Every s-control curve (for "s") or t-control curve (for "t") of the
+    homogeneous net is split by `bezier.subdivide`. Returns ((left, left
+    weights), (right, right weights)), nets (m+1, n+1, d) over [0, value] and
+    [value, 1] of the split direction; the weights are None for a polynomial patch.
+
+    >>> from cagd_ref.surfaces import patch_subdivide
+    >>> saddle = [[(0, 0, 0), (0, 1, 0)], [(1, 0, 0), (1, 1, 1)]]
+    >>> (left, _), (right, _) = patch_subdivide(saddle, 0.5, "s")
+    >>> left[1].tolist()
+    [[0.5, 0.0, 0.0], [0.5, 1.0, 0.5]]
+    """
+    h, rational = _lift(points, weights)
+    c = as_scalar(value, "value")
+    left, right = _along(h, _direction(direction), lambda curves: subdivide(curves, c))
+    for part in (left, right):
+        if np.any(part[..., -1] == 0):
+            raise ValueError(f"value: splitting at {c} gives a control point of weight zero")
+    return _drop(left, rational), _drop(right, rational)
+
+
+def _keep(h: np.ndarray, low: float, high: float, direction: str) -> np.ndarray:
+    """The homogeneous net of [low, high] in one direction (the other untouched), by two splits."""
+    if (low, high) == (0.0, 1.0):
+        return h
+    if high != 0:
+        part = _along(h, direction, lambda c: subdivide(c, high))[0]  # [0, high]
+        return _along(part, direction, lambda c: subdivide(c, low / high))[1]
+    part = _along(h, direction, lambda c: subdivide(c, low))[1]  # [low, 1], 1 - low > 0
+    return _along(part, direction, lambda c: subdivide(c, (high - low) / (1 - low)))[0]
+
+
+def subpatch(points, s_range=(0, 1), t_range=(0, 1), weights=None) -> tuple[np.ndarray, np.ndarray | None]:
+    """The net of the piece of the patch over [s0, s1] × [t0, t1], reparametrised to [0, 1]². Notes §15.2, Fig. 15.3.
+
+    Two splits per direction (`patch_subdivide`); the ranges may reach beyond
+    [0, 1] (the patch extended). Returns (points (m+1, n+1, d), weights or None).
+
+    >>> from cagd_ref.surfaces import subpatch, patch_point
+    >>> saddle = [[(0, 0, 0), (0, 1, 0)], [(1, 0, 0), (1, 1, 1)]]
+    >>> quarter, _ = subpatch(saddle, (0, 0.5), (0, 0.5))         # P_[0,1/2]×[0,1/2]
+    >>> quarter[1, 1].tolist()
+    [0.5, 0.5, 0.25]
+    """
+    h, rational = _lift(points, weights)
+    s0, s1 = as_interval(s_range, "s_range")
+    t0, t1 = as_interval(t_range, "t_range")
+    h = _keep(_keep(h, s0, s1, "s"), t0, t1, "t")
+    if np.any(h[..., -1] == 0):
+        raise ValueError("s_range, t_range: the piece has a control point of weight zero")
+    return _drop(h, rational)
+
+
+def patch_elevate(points, direction: str = "s", times: int = 1, weights=None) -> tuple[np.ndarray, np.ndarray | None]:
+    """Raise the degree in s (every s-control curve) or in t, `times` times; the surface stays. Notes §15.2.
+
+    Returns (points, weights or None): (m+1+times, n+1, d) for "s", (m+1, n+1+times, d) for "t".
+
+    >>> from cagd_ref.surfaces import patch_elevate
+    >>> saddle = [[(0, 0, 0), (0, 1, 0)], [(1, 0, 0), (1, 1, 1)]]
+    >>> patch_elevate(saddle, "t")[0][1].tolist()
+    [[1.0, 0.0, 0.0], [1.0, 0.5, 0.5], [1.0, 1.0, 1.0]]
+    """
+    h, rational = _lift(points, weights)
+    times = as_count(times, "times")
+    return _drop(_along(h, _direction(direction), lambda curves: elevate(curves, times)), rational)
+
+
+def corner_derivatives(points, weights=None, domain=((0, 1), (0, 1))) -> dict[str, np.ndarray]:
+    """P_s, P_t, P_ss, P_st, P_tt at the corner (s0, t0) from the six control points there. Notes §15.3.
+
+    For a patch of degree (m, n) over [s0, s1] × [t0, t1], with Δs = s1 - s0 and Δt = t1 - t0:
+
+        P_s  = m/Δs (w10/w00)(P10 - P00),       P_t = n/Δt (w01/w00)(P01 - P00),
+        P_ss = [m(m-1)(w20/w00)(P20 - P00) - 2m (w10/w00)((m w10 - w00)/w00)(P10 - P00)] / Δs²,
+        P_st = mn/(Δs Δt) [(w11/w00)(P11 - P00) - (w10 w01/w00²)((P10 - P00) + (P01 - P00))],
+        P_tt as P_ss with n, w01, w02, P01, P02.
+
+    The notes print "n w10 - w00" in P_ss (the degree in s is m), and their
+    P_st and P_tt were lost; these are rebuilt (and checked by SymPy). A
+    direction of degree 0 has zero derivatives, degree 1 a zero second one.
+    points: (m+1, n+1, d); weights None or (m+1, n+1). Returns a dict of (d,) arrays.
+
+    >>> from cagd_ref.surfaces import corner_derivatives
+    >>> saddle = [[(0, 0, 0), (0, 1, 0)], [(1, 0, 0), (1, 1, 1)]]
+    >>> derivatives = corner_derivatives(saddle)
+    >>> derivatives["P_s"].tolist(), derivatives["P_st"].tolist(), derivatives["P_tt"].tolist()
+    ([1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, 0.0, 0.0])
+    """
+    net, w = _net(points, weights)
+    w = np.ones(net.shape[:2]) if w is None else w
+    (s0, s1), (t0, t1) = _domain(domain)
+    ds, dt = s1 - s0, t1 - t0
+    m, n = net.shape[0] - 1, net.shape[1] - 1
+    zero = np.zeros(net.shape[2])
+
+    def leg(i, j):  # w_ij / w00 (P_ij - P00), zero where the net has no such point
+        return w[i, j] / w[0, 0] * (net[i, j] - net[0, 0]) if i <= m and j <= n else zero
+
+    def second(k, a1, a2, w1, h):  # P_ss (or P_tt) of the end of a degree-k curve
+        if k < 2:
+            return zero.copy()
+        return (k * (k - 1) * a2 - 2 * k * ((k * w1 - w[0, 0]) / w[0, 0]) * a1) / h**2
+
+    out = {
+        "P_s": m / ds * leg(1, 0),
+        "P_t": n / dt * leg(0, 1),
+        "P_ss": second(m, leg(1, 0), leg(2, 0), w[min(1, m), 0], ds),
+        "P_st": zero.copy(),
+        "P_tt": second(n, leg(0, 1), leg(0, 2), w[0, min(1, n)], dt),
+    }
+    if m >= 1 and n >= 1:
+        out["P_st"] = m * n / (ds * dt) * (leg(1, 1) - w[0, 1] / w[0, 0] * leg(1, 0) - w[1, 0] / w[0, 0] * leg(0, 1))
+    return out
+
+
+def _domain(domain) -> tuple[tuple[float, float], tuple[float, float]]:
+    try:
+        s_range, t_range = domain
+    except (TypeError, ValueError):
+        raise ValueError(f"domain: expected ((s0, s1), (t0, t1)), got {domain!r}") from None
+    return as_interval(s_range, "domain"), as_interval(t_range, "domain")
+
+
+# --- §15.4 tessellation -------------------------------------------------------------------------
+
+
+def _polynomial_net(points) -> np.ndarray:
+    net, _ = _net(points, None)
+    return net
+
+
+def second_difference_bounds(points) -> tuple[float, float, float]:
+    """(M1, M2, M3): bounds on |P_ss|, |P_st|, |P_tt| of a polynomial patch from its control net. Notes §15.4 (15.6).
+
+    M1 = m(m-1) max |P_(i+2)j - 2P_(i+1)j + P_ij|, M2 = mn max |P_(i+1)(j+1) -
+    P_(i+1)j - P_i(j+1) + P_ij|, M3 = n(n-1) max |P_i(j+2) - 2P_i(j+1) + P_ij|:
+    the hodographs' control points, whose convex hulls hold the derivatives
+    (0 where the degree is too low). Euclidean norms. points: (m+1, n+1, d).
+
+    >>> from cagd_ref.surfaces import second_difference_bounds
+    >>> second_difference_bounds([[(0, 0, 0), (0, 1, 0)], [(1, 0, 0), (1, 1, 1)]])    # z = s t
+    (0.0, 1.0, 0.0)
+    """
+    net = _polynomial_net(points)
+    m, n = net.shape[0] - 1, net.shape[1] - 1
+
+    def biggest(differences):
+        return float(np.linalg.norm(differences, axis=-1).max()) if differences.size else 0.0
+
+    m1 = m * (m - 1) * biggest(np.diff(net, 2, axis=0)) if m >= 2 else 0.0
+    m2 = m * n * biggest(np.diff(np.diff(net, axis=0), axis=1)) if m >= 1 and n >= 1 else 0.0
+    m3 = n * (n - 1) * biggest(np.diff(net, 2, axis=1)) if n >= 2 else 0.0
+    return float(m1), float(m2), float(m3)
+
+
+def _tolerance(tol) -> float:
+    value = as_scalar(tol, "tol")
+    if value <= 0:
+        raise ValueError(f"tol: expected a positive tolerance, got {value}")
+    return value
+
+
+def curve_tessellation_steps(points, tol) -> tuple[float, int]:
+    """(δ, n): the step δ = sqrt(8 tol / M) and n = ⌈1/δ⌉ segments that keep a polyline within tol. Notes §15.4.
+
+    M = n(n-1) max |P_(i+2) - 2P_(i+1) + P_i| bounds |P''|, and a chord over
+    a parameter step δ strays at most M δ²/8 from the curve. δ is at most 1
+    (M = 0: a line needs one segment). points: (n+1, d), polynomial; tol > 0.
+    A course example (the notes give none):
+
+    >>> from cagd_ref.surfaces import curve_tessellation_steps
+    >>> delta, n = curve_tessellation_steps([(0, 0), (1, 2), (3, 2), (4, 0)], 0.01)
+    >>> round(delta, 7), n
+    (0.0772195, 13)
+    """
+    pts = as_points(points)
+    eps = _tolerance(tol)
+    degree = len(pts) - 1
+    bound = degree * (degree - 1) * float(np.linalg.norm(np.diff(pts, 2, axis=0), axis=1).max()) if degree >= 2 else 0.0
+    delta = 1.0 if bound == 0 else min(1.0, float(np.sqrt(8 * eps / bound)))
+    return delta, int(np.ceil(1 / delta))
+
+
+def tessellation_deltas(points, tol) -> tuple[float, float]:
+    """(δs, δt): parameter steps with M1 δs² + 2 M2 δs δt + M3 δt² <= 8 tol and fewest triangles. Notes §15.4.
+
+    The three cases of the notes, with (M1, M2, M3) = `second_difference_bounds`:
+    M1 = 0 (straight in s): δs = 1, δt = (sqrt(M2² + 8 tol M3) - M2) / M3,
+    computed as 8 tol / (sqrt(M2² + 8 tol M3) + M2), whose limit for M3 = 0 (a
+    bilinear patch) is 4 tol / M2; M3 = 0: the same with s and t exchanged;
+    otherwise δs = k δt with k = sqrt(M3/M1), which maximises the cell area
+    δs δt, and δt = sqrt(8 tol / (M1 k² + 2 M2 k + M3)). Each step is then at
+    most 1 (the literal formula: a δs clipped to 1 does not enlarge δt). All
+    three zero (a plane): (1, 1). "Zero" means exactly 0. points: (m+1, n+1, d), polynomial; tol > 0.
+
+    >>> from cagd_ref.surfaces import tessellation_deltas
+    >>> z = [[0, 0, 2, 0], [4, 6, 6, 4], [4, 6, 6, 0], [0, 2, 2, 0]]       # the notes' bicubic (Fig. 15.5)
+    >>> net = [[(i, j, z[i][j]) for j in range(4)] for i in range(4)]
+    >>> [round(d, 8) for d in tessellation_deltas(net, 0.001)]
+    [0.00668268, 0.00771649]
+    """
+    m1, m2, m3 = second_difference_bounds(points)
+    eps = _tolerance(tol)
+    if m1 == 0 and m2 == 0 and m3 == 0:
+        return 1.0, 1.0
+    if m1 == 0:
+        ds, dt = 1.0, 8 * eps / (np.sqrt(m2 * m2 + 8 * eps * m3) + m2)
+    elif m3 == 0:
+        ds, dt = 8 * eps / (np.sqrt(m2 * m2 + 8 * eps * m1) + m2), 1.0
+    else:
+        k = np.sqrt(m3 / m1)
+        dt = np.sqrt(8 * eps / (m1 * k * k + 2 * m2 * k + m3))
+        ds = k * dt
+    return min(1.0, float(ds)), min(1.0, float(dt))
+
+
+def tessellation_steps(points, tol) -> tuple[int, int]:
+    """(n_s, n_t) = (⌈1/δs⌉, ⌈1/δt⌉): rows and columns of cells that tessellate the patch within tol. Notes §15.4.
+
+    With δs, δt from `tessellation_deltas`; the grid has (n_s+1)(n_t+1)
+    points and 2 n_s n_t triangles. points: (m+1, n+1, d), a polynomial patch
+    (the bound does not cover rational ones); tol > 0. The notes' example: the
+    bicubic of Fig. 15.5 with tol = 0.001 needs 150 × 130 steps, 39 000 triangles.
+
+    >>> from cagd_ref.surfaces import tessellation_steps
+    >>> z = [[0, 0, 2, 0], [4, 6, 6, 4], [4, 6, 6, 0], [0, 2, 2, 0]]
+    >>> tessellation_steps([[(i, j, z[i][j]) for j in range(4)] for i in range(4)], 0.001)
+    (150, 130)
+    """
+    ds, dt = tessellation_deltas(points, tol)
+    return int(np.ceil(1 / ds)), int(np.ceil(1 / dt))
+
+
+def tessellate(points, n_s: int, n_t: int, weights=None) -> tuple[np.ndarray, np.ndarray]:
+    """Triangles of the patch on the uniform n_s × n_t grid of cells: (vertices, triangles). Notes §15.4.
+
+    vertices ((n_s+1)(n_t+1), d): P(i/n_s, j/n_t) at row i (n_t+1) + j;
+    triangles (2 n_s n_t, 3) of vertex indices, each cell cut along its
+    diagonal from (i+1, j) to (i, j+1), both counterclockwise in (s, t).
+
+    >>> from cagd_ref.surfaces import tessellate
+    >>> vertices, triangles = tessellate([[(0, 0, 0), (0, 1, 0)], [(1, 0, 0), (1, 1, 1)]], 1, 1)
+    >>> vertices.tolist(), triangles.tolist()
+    ([[0.0, 0.0, 0.0], [0.0, 1.0, 0.0], [1.0, 0.0, 0.0], [1.0, 1.0, 1.0]], [[0, 2, 1], [3, 1, 2]])
+    """
+    n_s = as_count(n_s, "n_s", minimum=1)
+    n_t = as_count(n_t, "n_t", minimum=1)
+    s, t = np.meshgrid(np.arange(n_s + 1) / n_s, np.arange(n_t + 1) / n_t, indexing="ij")
+    vertices = patch_point(points, s.ravel(), t.ravel(), weights)
+    index = np.arange((n_s + 1) * (n_t + 1)).reshape(n_s + 1, n_t + 1)
+    v00, v10, v01, v11 = (index[i : i + n_s, j : j + n_t].ravel() for i, j in ((0, 0), (1, 0), (0, 1), (1, 1)))
+    lower = np.column_stack([v00, v10, v01])
+    upper = np.column_stack([v11, v01, v10])
+    return vertices, np.stack([lower, upper], axis=1).reshape(-1, 3)
+
+
+def tessellation_error(points, n_s: int, n_t: int, weights=None, samples: int = 6,
+                       max_cells: int | None = None) -> float:
+    """The largest distance, at sample points, between the patch and its triangles of `tessellate`. Notes §15.4.
+
+    In every triangle the linear interpolant of its three vertices is
+    compared with the patch at the same (s, t), at `samples` (>= 2) points
+    per cell edge on a barycentric grid (vertices included): a measured
+    lower estimate of the true maximum, to set beside the bound tol.
+    `max_cells` (None: all) measures only a regular sub-lattice of about
+    that many cells, for a quick estimate on fine grids.
+
+    >>> from cagd_ref.surfaces import tessellation_error
+    >>> saddle = [[(0, 0, 0), (0, 1, 0)], [(1, 0, 0), (1, 1, 1)]]      # z = s t: 1/4 off at the centre
+    >>> tessellation_error(saddle, 1, 1, samples=3)
+    0.25
+    """
+    n_s = as_count(n_s, "n_s", minimum=1)
+    n_t = as_count(n_t, "n_t", minimum=1)
+    samples = as_count(samples, "samples", minimum=2)
+    grid = np.linspace(0.0, 1.0, samples)
+    u, v = (g.ravel() for g in np.meshgrid(grid, grid, indexing="ij"))
+    lower = u + v <= 1 + 1e-12
+    local = np.concatenate([np.column_stack([u[lower], v[lower]]), 1 - np.column_stack([u[lower], v[lower]])])
+    lo = np.repeat([True, False], lower.sum())
+    rows, columns = np.arange(n_s), np.arange(n_t)
+    if max_cells is not None:
+        stride = max(1, int(np.ceil(np.sqrt(n_s * n_t / as_count(max_cells, "max_cells", minimum=1)))))
+        rows, columns = (r[min(stride // 2, len(r) - 1) :: min(stride, len(r))] for r in (rows, columns))
+    cells_i, cells_j = (c.ravel() for c in np.meshgrid(rows, columns, indexing="ij"))
+    i = np.repeat(cells_i, len(local))
+    j = np.repeat(cells_j, len(local))
+    uu, vv = np.tile(local[:, 0], len(cells_i)), np.tile(local[:, 1], len(cells_i))
+    is_low = np.tile(lo, len(cells_i))
+    s, t = (i + uu) / n_s, (j + vv) / n_t
+    corners = {key: patch_point(points, (i + a) / n_s, (j + b) / n_t, weights)
+               for key, (a, b) in {"00": (0, 0), "10": (1, 0), "01": (0, 1), "11": (1, 1)}.items()}
+    low = corners["00"] + uu[:, None] * (corners["10"] - corners["00"]) + vv[:, None] * (corners["01"] - corners["00"])
+    high = corners["11"] + (1 - uu)[:, None] * (corners["01"] - corners["11"]) + (1 - vv)[:, None] * (
+        corners["10"] - corners["11"])
+    linear = np.where(is_low[:, None], low, high)
+    return float(np.linalg.norm(patch_point(points, s, t, weights) - linear, axis=1).max())
+
+
+# --- §15.5 C^n patches ----------------------------------------------------------------------------
+
+
+def patch_continuity(a, b, a_interval=(0, 1), b_interval=(1, 2), direction: str = "s", tol: float = 1e-9) -> int:
+    """The order k of C^k continuity (-1: apart; at most 3) of two patches across a common boundary. Notes §15.5.
+
+    direction "s": patch a ends at s = a_interval[1] where patch b starts at
+    s = b_interval[0], and the j-th s-control curves of a and b are the
+    matching pair crossing the boundary; "t": the rows. The surfaces meet C^k
+    exactly when every matching pair meets C^k as curves
+    (`continuity.continuity` on each pair); the result is the smallest order.
+    a, b: (m+1, n+1, d) and (m'+1, n+1, d) for "s" (the same number of curves).
+
+    >>> from cagd_ref.surfaces import patch_continuity
+    >>> a = [[(0, 0, 0), (0, 1, 0)], [(1, 0, 0), (1, 1, 1)]]
+    >>> b = [[(1, 0, 0), (1, 1, 1)], [(2, 0, 0), (2, 1, 2)]]       # z = s t on [1, 2]: the same surface
+    >>> patch_continuity(a, b)
+    3
+    """
+    na, _ = _net(a, None, "a")
+    nb, _ = _net(b, None, "b")
+    a_interval, b_interval = as_interval(a_interval, "a_interval"), as_interval(b_interval, "b_interval")
+    tol = as_scalar(tol, "tol")
+    if _direction(direction) == "t":
+        na, nb = na.transpose(1, 0, 2), nb.transpose(1, 0, 2)
+    if na.shape[1:] != nb.shape[1:]:
+        raise ValueError(
+            f"a, b: expected the same number of matching control curves, got shapes {na.shape}, {nb.shape}")
+    orders = [continuity(na[:, j], nb[:, j], a_interval, b_interval, tol=tol).parametric for j in range(na.shape[1])]
+    return int(min(orders))
+
+
+# --- §15.6 NURBS surfaces ---------------------------------------------------------------------------
+
+
+def _nurbs(points, knots_s, knots_t, weights):
+    h, rational = _lift(points, weights)
+    cs, ct = h.shape[:2]
+    ks, kt = as_float_array(knots_s, "knots_s"), as_float_array(knots_t, "knots_t")
+    for name, kn, count in (("knots_s", ks, cs), ("knots_t", kt, ct)):
+        if kn.ndim != 1 or len(kn) < count or np.any(np.diff(kn) < 0):
+            raise ValueError(f"{name}: expected a non-decreasing knot vector of at least {count} knots "
+                             f"(c + degree - 1 in the notes' convention), got {kn.tolist()}")
+    return h, rational, ks, kt
+
+
+def nurbs_point(points, knots_s, knots_t, s, t, weights=None) -> np.ndarray:
+    """Point(s) of a NURBS surface: de Boor on every s-control curve, then across in t. Notes §15.6.
+
+    points (c_s, c_t, d), weights None or (c_s, c_t); knots in the notes'
+    convention for each direction (c + degree - 1 knots, so the degree in s
+    is len(knots_s) - c_s + 1), domain [knots_s[m-1], knots_s[c_s-1]] × ...
+    s, t as in `patch_point`, inside the domain.
+
+    >>> from cagd_ref.surfaces import nurbs_point
+    >>> saddle = [[(0, 0, 0), (0, 1, 0)], [(1, 0, 0), (1, 1, 1)]]   # degree (1, 1): the bilinear patch again
+    >>> nurbs_point(saddle, [0, 1], [0, 1], 0.5, 0.25).tolist()
+    [0.5, 0.25, 0.125]
+    """
+    h, _, ks, kt = _nurbs(points, knots_s, knots_t, weights)
+    ss, ts, scalar = _pairs(s, t)
+    cs, ct, dim = h.shape
+    beads = de_boor(h.reshape(cs, ct * dim), ks, ss).reshape(len(ss), ct, dim)
+    basis = basis_matrix(kt, len(kt) - ct + 1, ts)
+    return _finish(_project(np.einsum("kj,kjd->kd", basis, beads), ss, ts), scalar)
+
+
+def nurbs_insert_knot(points, knots_s, knots_t, value, direction: str = "s", weights=None):
+    """Insert one knot in s (into every s-control curve) or in t (every t-control curve). Notes §15.6.
+
+    Returns (points, knots_s, knots_t, weights or None); one more row of
+    control points for "s", one more column for "t"; the surface is unchanged.
+
+    >>> from cagd_ref.surfaces import nurbs_insert_knot
+    >>> saddle = [[(0, 0, 0), (0, 1, 0)], [(1, 0, 0), (1, 1, 1)]]
+    >>> points, ks, kt, _ = nurbs_insert_knot(saddle, [0, 1], [0, 1], 0.5, "t")
+    >>> points.shape, kt.tolist(), points[1, 1].tolist()
+    ((2, 3, 3), [0.0, 0.5, 1.0], [1.0, 0.5, 0.5])
+    """
+    h, rational, ks, kt = _nurbs(points, knots_s, knots_t, weights)
+    c = as_scalar(value, "value")
+    knots = ks if _direction(direction) == "s" else kt
+    holder = {}
+
+    def insert(curves):
+        new_points, holder["knots"] = insert_knot(curves, knots, c)
+        return new_points
+
+    h = _along(h, direction, insert)
+    ks, kt = (holder["knots"], kt.copy()) if direction == "s" else (ks.copy(), holder["knots"])
+    pts, w = _drop(h, rational)
+    return pts, ks, kt, w
+
+
+def nurbs_to_bezier(points, knots_s, knots_t, weights=None) -> tuple[np.ndarray, np.ndarray | None]:
+    """Split a NURBS surface into Bézier patches: each knot raised to multiplicity = degree. Notes §15.6.
+
+    First every s-control curve, then every t-control curve of the pieces, is
+    split into Bézier curves (`bspline.bezier_segments`). Returns (patches
+    (p_s, p_t, m+1, n+1, d), weights (p_s, p_t, m+1, n+1) or None): patch
+    [a, b] covers the a-th knot span in s and the b-th in t of positive length.
+
+    >>> from cagd_ref.surfaces import nurbs_to_bezier
+    >>> net = [[(i, j, 0) for j in range(3)] for i in range(3)]      # degree (1, 1), knots 0 1 2: four bilinear pieces
+    >>> patches, _ = nurbs_to_bezier(net, [0, 1, 2], [0, 1, 2])
+    >>> patches.shape, patches[1, 0, 0, 1].tolist()
+    ((2, 2, 2, 2, 3), [1.0, 1.0, 0.0])
+    """
+    h, rational, ks, kt = _nurbs(points, knots_s, knots_t, weights)
+    cs, ct, dim = h.shape
+    m, n = len(ks) - cs + 1, len(kt) - ct + 1
+    in_s = bezier_segments(h.reshape(cs, ct * dim), ks).reshape(-1, m + 1, ct, dim)  # (p_s, m+1, c_t, D)
+    ps = len(in_s)
+    columns = in_s.transpose(2, 0, 1, 3).reshape(ct, ps * (m + 1) * dim)
+    in_t = bezier_segments(columns, kt).reshape(-1, n + 1, ps, m + 1, dim)  # (p_t, n+1, p_s, m+1, D)
+    patches = np.ascontiguousarray(in_t.transpose(2, 0, 3, 1, 4))
+    return _drop(patches, rational)
+
+
+# --- §15.9 curvature at a corner --------------------------------------------------------------------
+
+
+def _corner_frame(net: np.ndarray):
+    if net.shape[2] != 3:
+        raise ValueError(f"points: curvature needs a patch in space, shape (m+1, n+1, 3), got {net.shape}")
+    if min(net.shape[:2]) < 2:
+        raise ValueError(f"points: expected degree >= 1 in s and in t, got a net of shape {net.shape}")
+    a, b = net[1, 0] - net[0, 0], net[0, 1] - net[0, 0]
+    cross = np.cross(a, b)
+    area2 = float(cross @ cross)
+    size = float(np.ptp(net.reshape(-1, 3), axis=0).max())
+    if area2 <= (ZERO_NORMAL * size**2) ** 2:
+        raise ValueError("points: P00, P10, P01 are collinear (a degenerate corner), so the normal is not defined")
+    return a, b, cross, area2
+
+
+def corner_curvatures(points, weights=None) -> tuple[float, float]:
+    """(Gaussian, mean) curvature at the corner (0, 0) from six control points. Notes §15.9 (15.54)-(15.55).
+
+    With a = P10 - P00, b = P01 - P00, the signed heights h_ij of P20, P11,
+    P02 above the plane P00 P10 P01 (positive on the side of a × b, the normal
+    P_s × P_t), p the degree of the first index (s) and q of the second (t):
+
+        K = w00² [((p-1)/p)((q-1)/q) w20 w02 h20 h02 - w11² h11²] / (w10² w01² |a × b|²),
+        H = w00 [((p-1)/p) w01² |b|² w20 h20 - 2 w10 w01 (a·b) w11 h11 + ((q-1)/q) w10² |a|² w02 h02]
+            / (2 w10² w01² |a × b|²).
+
+    (The notes' §15.9 calls the first-index degree n and the second m.) A
+    degree-1 direction drops its h term. points: (p+1, q+1, 3), p, q >= 1;
+    weights None or (p+1, q+1). A ValueError if P00, P10, P01 are collinear.
+
+    >>> from cagd_ref.surfaces import corner_curvatures
+    >>> c = (0, 0, 1)
+    >>> paraboloid = [[(i / 2, j / 2, (c[i] + c[j]) / 2) for j in range(3)] for i in range(3)]   # z = (x² + y²)/2
+    >>> corner_curvatures(paraboloid)
+    (1.0, 1.0)
+    """
+    net, w = _net(points, weights)
+    w = np.ones(net.shape[:2]) if w is None else w
+    a, b, cross, area2 = _corner_frame(net)
+    unit = cross / np.sqrt(area2)
+    p, q = net.shape[0] - 1, net.shape[1] - 1
+    height = {key: float((net[key] - net[0, 0]) @ unit) if key[0] <= p and key[1] <= q else 0.0
+              for key in ((2, 0), (1, 1), (0, 2))}
+    weight = {key: (w[key] if key[0] <= p and key[1] <= q else 0.0) for key in ((2, 0), (1, 1), (0, 2))}
+    fs, ft = (p - 1) / p, (q - 1) / q
+    w00, w10, w01 = w[0, 0], w[1, 0], w[0, 1]
+    h20, h11, h02 = weight[2, 0] * height[2, 0], weight[1, 1] * height[1, 1], weight[0, 2] * height[0, 2]
+    denominator = w10**2 * w01**2 * area2
+    gaussian = w00**2 * (fs * ft * h20 * h02 - h11**2) / denominator
+    mean = w00 * (fs * w01**2 * (b @ b) * h20 - 2 * w10 * w01 * (a @ b) * h11 + ft * w10**2 * (a @ a) * h02) / (
+        2 * denominator)
+    return float(gaussian), float(mean)
+
+
+def corner_fundamental_forms(points, weights=None) -> tuple[float, float, float, float, float, float]:
+    """(E, F, G, L, M, N) at the corner (0, 0), from `corner_derivatives`. Notes §15.9 (15.48)-(15.49).
+
+    E = P_s·P_s, F = P_s·P_t, G = P_t·P_t; L = P_ss·n, M = P_st·n, N = P_tt·n
+    with n the unit normal. Then K = (LN - M²)/(EG - F²) and
+    H = (NE - 2MF + LG) / (2(EG - F²)): an independent route to `corner_curvatures`.
+
+    >>> from cagd_ref.surfaces import corner_fundamental_forms
+    >>> corner_fundamental_forms([[(0, 0, 0), (0, 1, 0)], [(1, 0, 0), (1, 1, 1)]])
+    (1.0, 0.0, 1.0, 0.0, 1.0, 0.0)
+    """
+    net, _ = _net(points, weights)
+    _corner_frame(net)
+    d = corner_derivatives(net, weights)
+    normal = np.cross(d["P_s"], d["P_t"])
+    normal /= np.linalg.norm(normal)
+    values = (d["P_s"] @ d["P_s"], d["P_s"] @ d["P_t"], d["P_t"] @ d["P_t"],
+              d["P_ss"] @ normal, d["P_st"] @ normal, d["P_tt"] @ normal)
+    return tuple(float(v) for v in values)
+
+
+def principal_curvatures(points, weights=None) -> tuple[float, float]:
+    """(k1, k2), k1 >= k2: the principal curvatures H ± sqrt(H² - K) at the corner (0, 0). Notes §15.9.
+
+    >>> from cagd_ref.surfaces import principal_curvatures
+    >>> principal_curvatures([[(0, 0, 0), (0, 1, 0)], [(1, 0, 0), (1, 1, 1)]])      # z = s t: saddle
+    (1.0, -1.0)
+    """
+    gaussian, mean = corner_curvatures(points, weights)
+    root = float(np.sqrt(max(mean * mean - gaussian, 0.0)))
+    return mean + root, mean - root
+
+
+def surface_curvatures(points, s, t, weights=None) -> tuple[float, float]:
+    """(Gaussian, mean) curvature at one point (s, t) in [0, 1]²: subdivide until it is a corner. Notes §15.9.
+
+    The sub-patch [s, 1] (or [0, s], reversed, for s > 1/2) times the same in t
+    has the point at its corner (0, 0); each reversal flips the normal, so the
+    mean curvature is turned back to the orientation of P_s × P_t. s, t: numbers.
+
+    >>> from cagd_ref.surfaces import surface_curvatures
+    >>> saddle = [[(0, 0, 0), (0, 1, 0)], [(1, 0, 0), (1, 1, 1)]]
+    >>> [round(v, 12) for v in surface_curvatures(saddle, 1.0, 1.0)]        # z = st at (1, 1): K = -1/9, H = -1/3^(3/2)
+    [-0.111111111111, -0.19245008973]
+    """
+    h, rational = _lift(points, weights)
+    sigma, tau = as_scalar(s, "s"), as_scalar(t, "t")
+    for name, value in (("s", sigma), ("t", tau)):
+        if not 0 <= value <= 1:
+            raise ValueError(f"{name}: expected a value in [0, 1], got {value}")
+    sign = 1.0
+    for value, axis, direction in ((sigma, 0, "s"), (tau, 1, "t")):
+        if value > 0.5:
+            h = np.flip(_keep(h, 0.0, value, direction), axis=axis)
+            sign = -sign
+        else:
+            h = _keep(h, value, 1.0, direction)
+    pts, w = _drop(h, rational)
+    gaussian, mean = corner_curvatures(pts, w)
+    return gaussian, sign * mean
+
+
+def triangle_corner_curvatures(tri_points, weights=None) -> tuple[float, float]:
+    """(Gaussian, mean) curvature at the corner P_00n of a triangular patch. Notes §15.9 (15.59)-(15.60).
+
+    tri_points (n+1, n+1, 3) with entry [i, j] = P_(i, j, n-i-j) for i + j <= n
+    (the rest is ignored); weights the same layout or None. With a = P_10(n-1)
+    - P_00n, b = P_01(n-1) - P_00n and h_ij the signed heights of P_ij(n-i-j)
+    over their plane (positive along a × b), writing w_ij for w_(i, j, n-i-j):
+
+        K = ((n-1)/n)² w00² [w20 w02 h20 h02 - w11² h11²] / (w10² w01² |a × b|²),
+        H = ((n-1)/n) w00 [w01² |b|² w20 h20 - 2 w10 w01 (a·b) w11 h11 + w10² |a|² w02 h02] / (2 w10² w01² |a × b|²).
+
+    >>> from cagd_ref.surfaces import triangle_corner_curvatures
+    >>> o = (0, 0, 0)                                                # entries with i + j > n are ignored
+    >>> tri = [[o, (0, 0.5, 0), (0, 1, 0.5)], [(0.5, 0, 0), (0.5, 0.5, 0), o], [(1, 0, 0.5), o, o]]
+    >>> triangle_corner_curvatures(tri)                              # z = (x² + y²)/2 as a quadratic triangle
+    (1.0, 1.0)
+    """
+    net, w = _net(tri_points, weights, "tri_points")
+    if net.shape[0] != net.shape[1] or net.shape[0] < 2:
+        raise ValueError(f"tri_points: expected shape (n+1, n+1, 3) with n >= 1, entry [i, j] = P_(i,j,n-i-j), "
+                         f"got {net.shape}")
+    n = net.shape[0] - 1
+    w = np.ones(net.shape[:2]) if w is None else w
+    if n == 1:
+        _corner_frame(net)
+        return 0.0, 0.0
+    a, b, cross, area2 = _corner_frame(net)
+    unit = cross / np.sqrt(area2)
+    h20, h11, h02 = (w[k] * float((net[k] - net[0, 0]) @ unit) for k in ((2, 0), (1, 1), (0, 2)))
+    f = (n - 1) / n
+    w00, w10, w01 = w[0, 0], w[1, 0], w[0, 1]
+    denominator = w10**2 * w01**2 * area2
+    gaussian = f * f * w00**2 * (h20 * h02 - h11**2) / denominator
+    mean = f * w00 * (w01**2 * (b @ b) * h20 - 2 * w10 * w01 * (a @ b) * h11 + w10**2 * (a @ a) * h02) / (
+        2 * denominator)
+    return float(gaussian), float(mean)

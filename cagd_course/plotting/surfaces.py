@@ -13,11 +13,12 @@ from matplotlib.ticker import MaxNLocator
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
 from cagd_ref._validation import as_float_array, as_vector
-from cagd_ref.surfaces import patch_point
+from cagd_ref.surfaces import iso_curve, patch_normal, patch_point
 
 from ._style import check_axes
 
-__all__ = ["patch_grid", "plot_patch", "plot_control_net", "plot_tangent_plane", "finish_3d"]
+__all__ = ["patch_grid", "plot_patch", "plot_control_net", "plot_tangent_plane", "finish_3d", "plot_iso_curve",
+           "plot_triangles", "plot_normals"]
 
 NET_STYLE = {"color": "0.45", "linestyle": "--", "linewidth": 0.8, "marker": "o", "markersize": 3}
 
@@ -98,4 +99,43 @@ def finish_3d(ax, points, elev: float = 25.0, azim: float = -60.0, margin: float
         axis.set_major_locator(MaxNLocator(3))
         axis.set_label_text(name)
     ax.tick_params(labelsize=7, pad=0)
+    return ax
+
+
+def plot_iso_curve(ax, points, value, direction: str = "s", weights=None, color: str = "C3", beads: bool = True,
+                   label: str | None = None) -> Axes:
+    """An iso-parameter curve P(c, t) ("s") or P(s, c) ("t") with its beads and their control polygon. Notes §15.1.
+
+    The beads are the points at `value` of the control curves of that direction (`surfaces.iso_curve`):
+    the iso-curve's own control points, drawn as squares joined by a thin line.
+    """
+    _three_d(ax)
+    net = _net(points)
+    fine = np.linspace(0.0, 1.0, 61)
+    fixed = np.full_like(fine, float(value))
+    s, t = (fixed, fine) if direction == "s" else (fine, fixed)
+    ax.plot(*patch_point(net, s, t, weights).T, color=color, linewidth=2.2, label=label)
+    if beads:
+        bead_points, _ = iso_curve(net, value, direction, weights)
+        ax.plot(*bead_points.T, "s:", color=color, markersize=5, linewidth=0.9)
+    return ax
+
+
+def plot_triangles(ax, vertices, triangles, color: str = "C0", alpha: float = 0.35, edges: bool = True) -> Axes:
+    """A triangle mesh (vertices (V, 3), triangles (T, 3) indices), as from `surfaces.tessellate`. Notes §15.4."""
+    _three_d(ax)
+    v = as_float_array(vertices, "vertices")
+    tri = np.asarray(triangles, dtype=int)
+    ax.add_collection3d(Poly3DCollection(v[tri], facecolor=color, alpha=alpha,
+                                         edgecolor="0.25" if edges else "none", linewidth=0.3))
+    return ax
+
+
+def plot_normals(ax, points, s, t, weights=None, length: float = 0.5, color: str = "black") -> Axes:
+    """Unit normals P_s × P_t (scaled by `length`) at the pairs (s, t) of the patch. Notes §15.3."""
+    _three_d(ax)
+    net = _net(points)
+    base = np.atleast_2d(patch_point(net, s, t, weights))
+    normals = np.atleast_2d(patch_normal(net, s, t, weights))
+    ax.quiver(*base.T, *(length * normals).T, color=color, arrow_length_ratio=0.2, linewidth=1)
     return ax

@@ -549,3 +549,372 @@ def test_bad_curves_are_refused_by_name():
         su.sub_patches([[(0.0, 0.0, 0.0), (1.0, 0.0, 0.0)]])
     with pytest.raises(ValueError, match="^coeffs"):
         su.pseudo_horner([[[1.0]]], 0.5)
+
+
+# === chapter 15: tensor-product surfaces ==========================================================
+
+FIG15 = notes_example("15.patch")
+TESS = notes_example("15.tessellation")
+CURVE_TESS = notes_example("15.curve_tessellation")
+SPECIAL = notes_example("15.special_tessellations")
+CURV = notes_example("15.corner_curvatures")
+DERIV = notes_example("15.corner_derivatives")
+
+
+def lattice(z, dx=1.0, dy=1.0):
+    z = np.asarray(z, float)
+    i, j = np.meshgrid(np.arange(z.shape[0]), np.arange(z.shape[1]), indexing="ij")
+    return np.stack([dx * i, dy * j, z], axis=2)
+
+
+FIG_NET = lattice(FIG15.inputs["z"], 1.0, 1.5)
+TESS_NET = lattice(TESS.inputs["z"])
+
+
+def sympy_patch(points, weights, domain=((0, 1), (0, 1))):
+    """The rational patch as SymPy expressions in s, t over `domain`, and the symbols."""
+    s, t = sp.symbols("s t")
+    (s0, s1), (t0, t1) = domain
+    u, v = (s - s0) / (s1 - s0), (t - t0) / (t1 - t0)
+    h = homogeneous_net(points, weights)
+    m, n = h.shape[0] - 1, h.shape[1] - 1
+    basis = [[sp.binomial(m, i) * u**i * (1 - u) ** (m - i) * sp.binomial(n, j) * v**j * (1 - v) ** (n - j)
+              for j in range(n + 1)] for i in range(m + 1)]
+    coords = [sum(sp.Float(h[i, j, c], 30) * basis[i][j] for i in range(m + 1) for j in range(n + 1))
+              for c in range(h.shape[2])]
+    return [c / coords[-1] for c in coords[:-1]], s, t
+
+
+def test_control_curves_iso_curves_and_both_de_casteljau_orders_agree():
+    points, weights = random_patch(151, 3, 2)
+    assert su.control_curves(points, "s").shape == (3, 4, 3) and su.control_curves(points, "t").shape == (4, 3, 3)
+    s, t = parameter_pairs(151, 12)
+    expected = su.patch_point(points, s, t, weights)
+    for first in ("s", "t"):
+        np.testing.assert_allclose(su.de_casteljau_patch(points, s, t, weights, first=first), expected, atol=1e-13)
+    for c in FIG15.inputs["iso_values"]:
+        beads, bead_weights = su.iso_curve(points, c, "s", weights)  # P(c, t), a rational curve in t
+        np.testing.assert_allclose(bezier.evaluate(beads, t, bead_weights), su.patch_point(points, c, t, weights),
+                                   atol=1e-13)
+        beads, bead_weights = su.iso_curve(points, c, "t", weights)
+        np.testing.assert_allclose(bezier.evaluate(beads, s, bead_weights), su.patch_point(points, s, c, weights),
+                                   atol=1e-13)
+    assert su.iso_curve(points, 0.3, "s")[1] is None
+    with pytest.raises(ValueError, match="^direction"):
+        su.iso_curve(points, 0.3, "u")
+
+
+def test_the_corners_interpolate_and_the_boundary_curves_are_rows_and_columns():
+    net = FIG_NET
+    np.testing.assert_allclose(su.patch_point(net, [0, 1, 0, 1], [0, 0, 1, 1]), net[[0, 3, 0, 3], [0, 0, 2, 2]])
+    t = np.linspace(0, 1, 9)
+    # The notes' erratum: P(s, 0) (not P(0, t)) is the cubic on P00, P10, P20, P30; P(1, t) the quadratic P30, P31, P32.
+    np.testing.assert_allclose(su.patch_point(net, t, 0.0), bezier.evaluate(net[:, 0], t), atol=1e-14)
+    np.testing.assert_allclose(su.patch_point(net, 1.0, t), bezier.evaluate(net[3], t), atol=1e-14)
+    assert "P(s,0)" in FIG15.errata["boundary_curves"].correct
+
+
+def test_subdivision_sub_patches_and_elevation_keep_the_surface():
+    points, weights = random_patch(152, 3, 2)
+    quarter, qw = su.subpatch(points, (0, 0.5), (0, 0.5), weights)  # P_[0,½]×[0,½], Fig. 15.3c
+    np.testing.assert_allclose(su.patch_point(quarter, 0.4, 0.8, qw), su.patch_point(points, 0.2, 0.4, weights),
+                               atol=1e-13)
+    piece, pw = su.subpatch(points, (0.2, 0.7), (0.3, 0.9), weights)
+    np.testing.assert_allclose(su.patch_point(piece, 0.5, 0.5, pw), su.patch_point(points, 0.45, 0.6, weights),
+                               atol=1e-13)
+    for direction in ("s", "t"):
+        (left, lw), (right, rw) = su.patch_subdivide(points, 0.3, direction, weights)
+        a = (0.3 * 0.5, 0.6) if direction == "s" else (0.6, 0.3 * 0.5)
+        np.testing.assert_allclose(su.patch_point(left, 0.5, 0.6, lw) if direction == "s" else
+                                   su.patch_point(left, 0.6, 0.5, lw), su.patch_point(points, *a, weights), atol=1e-13)
+        assert right.shape == points.shape
+        raised, raised_w = su.patch_elevate(points, direction, 2, weights)
+        assert raised.shape == ((6, 3, 3) if direction == "s" else (4, 5, 3))
+        s, t = parameter_pairs(152, 8)
+        np.testing.assert_allclose(su.patch_point(raised, s, t, raised_w), su.patch_point(points, s, t, weights),
+                                   atol=1e-13)
+    copy = points.copy()
+    su.subpatch(points, (0.1, 0.2), (0.3, 0.4), weights)
+    assert np.array_equal(copy, points)
+
+
+def test_corner_derivatives_over_a_general_domain_against_sympy():
+    rng = np.random.default_rng(int(DERIV.inputs["seed"]))
+    points, weights = rng.uniform(-2, 2, (4, 3, 3)), rng.uniform(0.5, 2, (4, 3))
+    domain = tuple(tuple(r) for r in DERIV.inputs["domain"].tolist())
+    (s0, _), (t0, _) = domain
+    expr, s, t = sympy_patch(points, weights, domain)
+    d = su.corner_derivatives(points, weights, domain)
+    for name, (ks, kt) in {"P_s": (1, 0), "P_t": (0, 1), "P_ss": (2, 0), "P_st": (1, 1), "P_tt": (0, 2)}.items():
+        exact = [float(sp.diff(c, s, ks, t, kt).subs({s: s0, t: t0})) if ks and kt else
+                 float(sp.diff(c, s, ks).subs({s: s0, t: t0})) if ks else float(sp.diff(c, t, kt).subs({s: s0, t: t0}))
+                 for c in expr]
+        np.testing.assert_allclose(d[name], exact, rtol=1e-10, atol=1e-10)
+    # The notes' typo, n w10 - w00 in P_ss, is off whenever the degrees differ (here m = 3, n = 2).
+    m, n, w = 3, 2, weights
+    a1, a2 = w[1, 0] / w[0, 0] * (points[1, 0] - points[0, 0]), w[2, 0] / w[0, 0] * (points[2, 0] - points[0, 0])
+    typo = (m * (m - 1) * a2 - 2 * m * ((n * w[1, 0] - w[0, 0]) / w[0, 0]) * a1) / (domain[0][1] - s0) ** 2
+    assert np.linalg.norm(typo - d["P_ss"]) > 1e-3
+    assert "m w10" in DERIV.errata["p_ss"].correct
+
+
+def test_normals_by_subdivision_and_by_finite_differences():
+    points, weights = random_patch(153, 3, 2)
+    s, t = parameter_pairs(153, 10)
+    normals = su.patch_normal(points, s, t, weights)
+    h = 1e-6
+    for k in range(len(s)):
+        sk, tk = float(np.clip(s[k], h, 1 - h)), float(np.clip(t[k], h, 1 - h))
+        p_s = (su.patch_point(points, sk + h, tk, weights) - su.patch_point(points, sk - h, tk, weights)) / (2 * h)
+        p_t = (su.patch_point(points, sk, tk + h, weights) - su.patch_point(points, sk, tk - h, weights)) / (2 * h)
+        fd = np.cross(p_s, p_t)
+        np.testing.assert_allclose(su.patch_normal(points, sk, tk, weights), fd / np.linalg.norm(fd), atol=1e-6)
+        if s[k] < 1 and t[k] < 1:  # §15.3: subdivide so that the point is the corner (0, 0) of [s, 1] × [t, 1]
+            sub, sw = su.subpatch(points, (s[k], 1), (t[k], 1), weights)
+            d = su.corner_derivatives(sub, sw)
+            corner = np.cross(d["P_s"], d["P_t"])
+            np.testing.assert_allclose(corner / np.linalg.norm(corner), normals[k], atol=1e-10)
+    # Ignoring the weights at an interior point turns the normal.
+    wrong = su.patch_normal(points, 0.4, 0.6)
+    assert np.degrees(np.arccos(np.clip(wrong @ su.patch_normal(points, 0.4, 0.6, weights), -1, 1))) > 1
+
+
+def test_the_notes_tessellation_example():
+    assert su.second_difference_bounds(TESS_NET) == tuple(TESS.results["bounds"])
+    # The untangled hodograph arrays of the notes (rows from the largest j down).
+    z = TESS.inputs["z"]
+    p_ss = [[6 * (z[i + 2, j] - 2 * z[i + 1, j] + z[i, j]) for i in range(2)] for j in range(3, -1, -1)]
+    p_st = [[9 * (z[i + 1, j + 1] - z[i + 1, j] - z[i, j + 1] + z[i, j]) for i in range(3)] for j in range(2, -1, -1)]
+    p_tt = [[6 * (z[i, j + 2] - 2 * z[i, j + 1] + z[i, j]) for i in range(4)] for j in range(1, -1, -1)]
+    for ours, notes in ((p_ss, "p_ss"), (p_st, "p_st"), (p_tt, "p_tt")):
+        np.testing.assert_array_equal(ours, TESS.results[notes])
+    delta_s, delta_t = su.tessellation_deltas(TESS_NET, TESS.inputs["tol"])
+    assert delta_s / delta_t == pytest.approx(TESS.results["k"], rel=1e-14)
+    assert delta_s == pytest.approx(TESS.results["delta_s"], abs=5e-9)
+    assert delta_t == pytest.approx(TESS.results["delta_t"], abs=5e-11)
+    n_s, n_t = su.tessellation_steps(TESS_NET, TESS.inputs["tol"])
+    assert (n_s, n_t) == (TESS.results["n_s"], TESS.results["n_t"]) and 2 * n_s * n_t == TESS.results["triangles"]
+    # k = 1 instead: 140 × 140, 39 200 triangles.
+    m1, m2, m3 = TESS.results["bounds"]
+    equal = int(np.ceil(1 / np.sqrt(8 * TESS.inputs["tol"] / (m1 + 2 * m2 + m3))))
+    assert equal == TESS.results["n_equal"] and 2 * equal**2 == TESS.results["triangles_equal"]
+    vertices, triangles = su.tessellate(TESS_NET, n_s, n_t)
+    assert vertices.shape == ((n_s + 1) * (n_t + 1), 3) and triangles.shape == (39000, 3)
+    error = su.tessellation_error(TESS_NET, n_s, n_t)
+    assert error == pytest.approx(TESS.results["measured_error"], rel=1e-5) and error < TESS.inputs["tol"]
+
+
+def test_the_bound_is_a_bound_and_the_optimal_k_gives_the_fewest_triangles():
+    rng = np.random.default_rng(154)
+    for _ in range(6):
+        points = rng.uniform(-1, 1, (int(rng.integers(2, 5)), int(rng.integers(2, 5)), 3))
+        tol = float(10 ** rng.uniform(-2.5, -1))
+        n_s, n_t = su.tessellation_steps(points, tol)
+        assert su.tessellation_error(points, n_s, n_t, samples=5) <= tol
+        m1, m2, m3 = su.second_difference_bounds(points)
+        for k in np.linspace(0.2, 3, 15):  # any other k: at least as many triangles before rounding
+            dt = np.sqrt(8 * tol / (m1 * k * k + 2 * m2 * k + m3))
+            if k * dt < 1 and dt < 1:
+                ds0, dt0 = su.tessellation_deltas(points, tol)
+                assert ds0 * dt0 >= k * dt * dt * (1 - 1e-12)
+
+
+def test_the_cases_the_notes_leave_open():
+    tol = SPECIAL.inputs["tol"]
+    assert su.tessellation_steps(SPECIAL.inputs["ruled"], tol) == tuple(SPECIAL.results["ruled_steps"])
+    assert su.tessellation_steps(np.transpose(SPECIAL.inputs["ruled"], (1, 0, 2)), tol) == tuple(
+        SPECIAL.results["ruled_steps"][::-1])
+    assert su.tessellation_steps(SPECIAL.inputs["bilinear"], tol) == tuple(SPECIAL.results["bilinear_steps"])
+    assert su.tessellation_steps(SPECIAL.inputs["plane"], tol) == (1, 1)
+    assert su.tessellation_steps(TESS_NET, 100.0) == (1, 1)
+    # The stable form of Case 1 agrees with the notes' (sqrt(M2² + 8 ε M3) - M2) / M3.
+    _, m2, m3 = su.second_difference_bounds(SPECIAL.inputs["ruled"])
+    assert su.tessellation_deltas(SPECIAL.inputs["ruled"], tol)[1] == pytest.approx(
+        (np.sqrt(m2**2 + 8 * tol * m3) - m2) / m3, rel=1e-9)
+    for bad in (0.0, -1.0):
+        with pytest.raises(ValueError, match="^tol"):
+            su.tessellation_steps(TESS_NET, bad)
+
+
+def test_curve_tessellation_course_example():
+    delta, n = su.curve_tessellation_steps(CURVE_TESS.inputs["points"], CURVE_TESS.inputs["tol"])
+    assert delta == pytest.approx(CURVE_TESS.results["delta"], abs=5e-8) and n == CURVE_TESS.results["segments"]
+    points = CURVE_TESS.inputs["points"]
+    t = np.linspace(0, 1, 20001)
+    curve = bezier.evaluate(points, t)
+    for segments, key in ((13, "error_13"), (12, "error_12")):
+        knots = np.linspace(0, 1, segments + 1)
+        chords = np.column_stack([np.interp(t, knots, c) for c in bezier.evaluate(points, knots).T])
+        assert np.linalg.norm(curve - chords, axis=1).max() == pytest.approx(CURVE_TESS.results[key], abs=2e-6)
+
+
+def test_cn_patches_from_matching_control_curves():
+    rng = np.random.default_rng(155)
+    a = rng.uniform(-1, 1, (4, 3, 3))
+    # Continue every s-control curve of a (on [0, 1]) C^2 onto [1, 3] by its blossom: b_k = a(1, .., 1, 3, .., 3).
+    b = np.empty_like(a)
+    for j in range(3):
+        for k in range(4):
+            b[k, j] = bspline.bezier_blossom(a[:, j], [1.0] * (3 - k) + [3.0] * k)
+    assert su.patch_continuity(a, b, (0, 1), (1, 3)) == 3  # the same cubic: every order matches
+    b2 = b.copy()
+    b2[3] += 0.5  # only the last row moves: C^2 stays
+    assert su.patch_continuity(a, b2, (0, 1), (1, 3)) == 2
+    b1 = b.copy()
+    b1[2, 1] += 0.3  # one curve loses C^2: the surface is only C^1
+    assert su.patch_continuity(a, b1, (0, 1), (1, 3)) == 1
+    assert su.patch_continuity(a, b1 + 1, (0, 1), (1, 3)) == -1
+    assert su.patch_continuity(np.transpose(a, (1, 0, 2)), np.transpose(b1, (1, 0, 2)), (0, 1), (1, 3), "t") == 1
+
+
+def nurbs_example(seed=156):
+    rng = np.random.default_rng(seed)
+    points, weights = rng.uniform(-2, 2, (6, 5, 3)), rng.uniform(0.5, 2, (6, 5))
+    knots_s, knots_t = np.array([0, 0, 0, 1, 2, 4, 4, 4.0]), np.array([0, 0, 1, 2, 3, 3.0])  # cubic × quadratic
+    return points, weights, knots_s, knots_t
+
+
+def test_nurbs_points_against_scipy_ndbspline():
+    points, weights, knots_s, knots_t = nurbs_example()
+    h = homogeneous_net(points, weights)
+    spline = NdBSpline((np.r_[knots_s[0], knots_s, knots_s[-1]], np.r_[knots_t[0], knots_t, knots_t[-1]]), h, (3, 2))
+    rng = np.random.default_rng(157)
+    s, t = rng.uniform(0, 4, 30), rng.uniform(0, 3, 30)
+    expected = spline(np.column_stack([s, t]))
+    np.testing.assert_allclose(su.nurbs_point(points, knots_s, knots_t, s, t, weights),
+                               expected[:, :3] / expected[:, 3:], atol=1e-12)
+    # A Bézier patch is a NURBS surface with Bézier end knots.
+    patch, w = random_patch(158, 3, 2)
+    np.testing.assert_allclose(su.nurbs_point(patch, [0, 0, 0, 1, 1, 1], [0, 0, 1, 1], s / 4, t / 3, w),
+                               su.patch_point(patch, s / 4, t / 3, w), atol=1e-13)
+
+
+def test_nurbs_knot_insertion_and_bezier_extraction_keep_the_surface():
+    points, weights, knots_s, knots_t = nurbs_example()
+    rng = np.random.default_rng(159)
+    s, t = rng.uniform(0, 4, 25), rng.uniform(0, 3, 25)
+    before = su.nurbs_point(points, knots_s, knots_t, s, t, weights)
+    for value, direction in ((1.5, "s"), (2.0, "t"), (1.0, "s")):
+        p2, ks, kt, w2 = su.nurbs_insert_knot(points, knots_s, knots_t, value, direction, weights)
+        assert p2.shape == ((7, 5, 3) if direction == "s" else (6, 6, 3))
+        np.testing.assert_allclose(su.nurbs_point(p2, ks, kt, s, t, w2), before, atol=1e-12)
+    patches, pw = su.nurbs_to_bezier(points, knots_s, knots_t, weights)
+    assert patches.shape == (3, 3, 4, 3, 3) and pw.shape == (3, 3, 4, 3)
+    spans_s, spans_t = bspline.bezier_segment_intervals(knots_s, 3), bspline.bezier_segment_intervals(knots_t, 2)
+    for a, (s0, s1) in enumerate(spans_s):
+        for b, (t0, t1) in enumerate(spans_t):
+            u, v = rng.uniform(0, 1, 5), rng.uniform(0, 1, 5)
+            np.testing.assert_allclose(su.patch_point(patches[a, b], u, v, pw[a, b]),
+                                       su.nurbs_point(points, knots_s, knots_t, s0 + u * (s1 - s0),
+                                                      t0 + v * (t1 - t0), weights), atol=1e-12)
+
+
+def test_geomdl_agrees_on_nurbs_surfaces_normals_and_knot_insertion():
+    nurbs = pytest.importorskip("geomdl.NURBS")
+    operations = pytest.importorskip("geomdl.operations")
+    points, weights, knots_s, knots_t = nurbs_example(160)
+    surface = nurbs.Surface(normalize_kv=False)  # geomdl rescales knots to [0, 1] by default
+    surface.degree_u, surface.degree_v = 3, 2
+    surface.ctrlpts_size_u, surface.ctrlpts_size_v = 6, 5
+    surface.ctrlptsw = homogeneous_net(points, weights).reshape(-1, 4).tolist()
+    surface.knotvector_u = np.r_[0, knots_s, 4].tolist()
+    surface.knotvector_v = np.r_[0, knots_t, 3].tolist()
+    for s, t in ((0.5, 0.7), (2.5, 1.2), (3.9, 2.9)):
+        np.testing.assert_allclose(surface.evaluate_single((s, t)), su.nurbs_point(points, knots_s, knots_t, s, t,
+                                                                                     weights), atol=1e-12)
+        d = surface.derivatives(s, t, order=1)
+        normal = np.cross(d[1][0], d[0][1])
+        patches, pw = su.nurbs_to_bezier(points, knots_s, knots_t, weights)
+        a = int(np.searchsorted([1, 2], s, side="right"))
+        b = int(np.searchsorted([1, 2], t, side="right"))
+        (s0, s1), (t0, t1) = bspline.bezier_segment_intervals(knots_s, 3)[a], bspline.bezier_segment_intervals(
+            knots_t, 2)[b]
+        ours = su.patch_normal(patches[a, b], (s - s0) / (s1 - s0), (t - t0) / (t1 - t0), pw[a, b])
+        np.testing.assert_allclose(ours, normal / np.linalg.norm(normal), atol=1e-10)
+    operations.insert_knot(surface, [1.5, None], [1, 0])
+    p2, ks, _, w2 = su.nurbs_insert_knot(points, knots_s, knots_t, 1.5, "s", weights)
+    np.testing.assert_allclose(np.array(surface.ctrlptsw).reshape(7, 5, 4), homogeneous_net(p2, w2), atol=1e-12)
+
+
+def test_corner_curvatures_of_analytic_surfaces():
+    par = lattice(CURV.inputs["paraboloid_z"], 0.5, 0.5)
+    saddle = lattice(CURV.inputs["saddle_z"], 0.5, 0.5)
+    assert su.corner_curvatures(par) == pytest.approx(tuple(CURV.results["paraboloid"]))
+    assert su.corner_curvatures(saddle) == pytest.approx(tuple(CURV.results["saddle"]), abs=1e-15)
+    cylinder = su.corner_curvatures(CURV.inputs["cylinder"], CURV.inputs["cylinder_weights"])
+    assert cylinder == pytest.approx(tuple(CURV.results["cylinder"]), abs=1e-14)
+    # Reversing one direction flips the normal: H changes sign, K does not.
+    assert su.corner_curvatures(np.transpose(par, (1, 0, 2))) == pytest.approx((1.0, -1.0))
+    assert su.principal_curvatures(saddle) == pytest.approx((1.0, -1.0))
+    # The torus patch of chapter 16 at (0, 0): the outer equator, principal curvatures 1/r and 1/(R + r),
+    # negative along the outward normal.
+    torus, tw = TORUS.args("points", "weights")
+    R, r = TORUS.inputs["major"], TORUS.inputs["minor"]
+    assert su.corner_curvatures(torus, tw) == pytest.approx((1 / (r * (R + r)), -(1 / r + 1 / (R + r)) / 2))
+    # Anywhere on the torus by subdivision: K = cos v / (r (R + r cos v)) with v the angle on the tube.
+    for s, t in ((0.3, 0.4), (0.8, 0.9), (1.0, 1.0)):
+        x = su.patch_point(torus, s, t, tw)
+        cos_v = (np.hypot(x[0], x[1]) - R) / r
+        gaussian, _ = su.surface_curvatures(torus, s, t, tw)
+        assert gaussian == pytest.approx(cos_v / (r * (R + r * cos_v)), abs=1e-10)
+
+
+@pytest.mark.parametrize("shape", [(3, 2), (2, 3), (4, 4), (1, 3)])
+def test_corner_curvatures_against_sympy_fundamental_forms(shape):
+    points, weights = random_patch(161 + shape[0], *shape)
+    expr, s, t = sympy_patch(points, weights)
+    at = {s: 0, t: 0}
+    r_s = sp.Matrix([sp.diff(c, s) for c in expr]).subs(at)
+    r_t = sp.Matrix([sp.diff(c, t) for c in expr]).subs(at)
+    normal = r_s.cross(r_t)
+    normal = normal / normal.norm()
+    second = [sp.Matrix([sp.diff(c, *v) for c in expr]).subs(at).dot(normal) for v in ((s, s), (s, t), (t, t))]
+    e, f, g = r_s.dot(r_s), r_s.dot(r_t), r_t.dot(r_t)
+    big_l, big_m, big_n = second
+    gaussian = float((big_l * big_n - big_m**2) / (e * g - f**2))
+    mean = float((big_n * e - 2 * big_m * f + big_l * g) / (2 * (e * g - f**2)))
+    assert su.corner_curvatures(points, weights) == pytest.approx((gaussian, mean), rel=1e-9, abs=1e-12)
+    forms = su.corner_fundamental_forms(points, weights)
+    assert forms == pytest.approx(tuple(float(v) for v in (e, f, g, big_l, big_m, big_n)), rel=1e-9, abs=1e-12)
+    k1, k2 = su.principal_curvatures(points, weights)
+    assert k1 + k2 == pytest.approx(2 * mean, abs=1e-10) and k1 * k2 == pytest.approx(gaussian, abs=1e-10)
+
+
+def test_triangle_corner_curvatures_against_sympy():
+    rng = np.random.default_rng(162)
+    n = 3
+    tri, w = rng.uniform(-1, 1, (n + 1, n + 1, 3)), rng.uniform(0.5, 2, (n + 1, n + 1))
+    tri[..., :2] += np.stack(np.meshgrid(np.arange(n + 1), np.arange(n + 1), indexing="ij"), axis=2)
+    u, v = sp.symbols("u v")
+    num, den = [0, 0, 0], 0
+    for i in range(n + 1):
+        for j in range(n + 1 - i):
+            k = n - i - j
+            b = sp.factorial(n) / (sp.factorial(i) * sp.factorial(j) * sp.factorial(k)) * u**i * v**j * (1 - u - v)**k
+            den += sp.Float(w[i, j], 30) * b
+            for c in range(3):
+                num[c] += sp.Float(w[i, j] * tri[i, j, c], 30) * b
+    expr = [c / den for c in num]
+    at = {u: 0, v: 0}
+    r_u = sp.Matrix([sp.diff(c, u) for c in expr]).subs(at)
+    r_v = sp.Matrix([sp.diff(c, v) for c in expr]).subs(at)
+    normal = r_u.cross(r_v) / r_u.cross(r_v).norm()
+    big_l, big_m, big_n = (sp.Matrix([sp.diff(c, *x) for c in expr]).subs(at).dot(normal)
+                           for x in ((u, u), (u, v), (v, v)))
+    e, f, g = r_u.dot(r_u), r_u.dot(r_v), r_v.dot(r_v)
+    gaussian = float((big_l * big_n - big_m**2) / (e * g - f**2))
+    mean = float((big_n * e - 2 * big_m * f + big_l * g) / (2 * (e * g - f**2)))
+    assert su.triangle_corner_curvatures(tri, w) == pytest.approx((gaussian, mean), rel=1e-9)
+
+
+def test_chapter_15_bad_input():
+    with pytest.raises(ValueError, match="^points"):
+        su.corner_curvatures([[(0, 0, 0), (0, 1, 0)], [(0, 2, 0), (1, 1, 1)]])  # P00, P10, P01 collinear
+    with pytest.raises(ValueError, match="^points"):
+        su.corner_curvatures([[(0, 0, 0), (0, 1, 0), (0, 2, 1)]])
+    with pytest.raises(ValueError, match="^knots_s"):
+        su.nurbs_point(np.zeros((4, 3, 3)), [0, 1], [0, 1], 0.5, 0.5)
+    with pytest.raises(ValueError, match="^s_range"):
+        su.subpatch(SADDLE, (0.5, 0.5), (0, 1))
+    with pytest.raises(ValueError, match="^s"):
+        su.surface_curvatures(SADDLE, 1.5, 0.5)
