@@ -8,7 +8,8 @@ curvature combs), `bsplines` (B-splines with polar and knot-interval labels),
 `fitting` (ch. 11), `intervals` (interval Bézier curves, ch. 12), `rounding`
 (floating-point bands, ch. 13), `deformation` (FFD lattices, ch. 14), `surfaces`
 (patches in 3-D, ch. 15-16), `implicit_curves` (sign regions and intersection
-polynomials, ch. 17), `pencils` (pencils of lines, ch. 18), `hybrid` (ch. 20),
+polynomials, ch. 17), `pencils` (pencils of lines, ch. 18), `singular_points` (singular points,
+pencil parametrizations and silhouettes, ch. 19), `hybrid` (ch. 20),
 `quads` (maps of quadrilaterals, ch. 21).
 
 Every function draws into the matplotlib Axes `ax` it is given and returns that

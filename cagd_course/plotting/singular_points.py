@@ -1,0 +1,96 @@
+"""Figures of chapter 19: implicit curves with their singular points, tangent cones, pencil parametrizations
+and silhouettes (the discriminant in x drawn under the curve).
+
+Every function draws into the matplotlib Axes `ax` it is given and returns it. Curves are coefficient arrays
+c[i, j] of xⁱ yʲ, as `cagd_ref.plane_curves` uses them.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.axes import Axes
+from numpy.polynomial import polynomial as P
+
+from cagd_ref import plane_curves
+from cagd_ref._validation import as_float_array, as_interval, as_vector
+
+from ._style import check_axes
+from .algebraic import plot_implicit
+from .pencils import plot_line, set_box
+
+__all__ = ["plot_curve", "plot_tangent_cone", "plot_pencil_ray", "plot_parametrization", "plot_discriminant"]
+
+SINGULAR_STYLE = {"color": "C3", "marker": "o", "markersize": 7, "linestyle": "none", "zorder": 6}
+
+
+def _coefficients(c) -> np.ndarray:
+    array = as_float_array(c, "c")
+    if array.ndim != 2:
+        raise ValueError(f"c: expected a 2-D array c[i, j] of x^i y^j, got shape {array.shape}")
+    return array
+
+
+def plot_curve(ax, c, xlim, ylim, resolution: int = 360, **style) -> Axes:
+    """Draw f(x, y) = 0 over the box xlim × ylim (a contour of the polynomial c). Notes §19.1.
+
+    An isolated real point (an acnode) is no contour: mark it with `plot_tangent_cone` or by hand.
+    """
+    check_axes(ax)
+    coeffs = _coefficients(c)
+    options = {"colors": "C0", "linewidths": 2.0, **style}
+    plot_implicit(ax, lambda u, v: P.polyval2d(u, v, coeffs), xlim, ylim, resolution=resolution, **options)
+    return set_box(ax, xlim, ylim)
+
+
+def plot_tangent_cone(ax, c, point, xlim, ylim, **style) -> Axes:
+    """Mark the singular point and draw its real tangent lines (the factors of the tangent cone). Notes §19.2."""
+    check_axes(ax)
+    p = as_vector(point, "point", dim=2)
+    for a, b in plane_curves.tangent_directions(c, p):
+        plot_line(ax, [b, -a, a * p[1] - b * p[0]], xlim, ylim, **{"color": "C1", "linewidth": 1.3,
+                                                                      "linestyle": "--", **style})
+    ax.plot(*p, **SINGULAR_STYLE)
+    return set_box(ax, xlim, ylim)
+
+
+def plot_pencil_ray(ax, point, t, xlim, ylim, **style) -> Axes:
+    """Draw the line y - y0 = t (x - x0) of the pencil through `point`. Notes §19.5, Figures 19.6 and 19.7."""
+    p = as_vector(point, "point", dim=2)
+    return plot_line(ax, [t, -1.0, p[1] - t * p[0]], xlim, ylim, **{"color": "C2", "linewidth": 1.4, **style})
+
+
+def plot_parametrization(ax, xyw, interval=(-4.0, 4.0), samples: int = 600, **style) -> Axes:
+    """Draw the rational curve (X/W, Y/W) of rows (3, n+1) over `interval`, broken where W changes sign. §19.5."""
+    check_axes(ax)
+    rows = as_float_array(xyw, "xyw")
+    lo, hi = as_interval(interval, "interval")
+    ts = np.linspace(lo, hi, samples)
+    values = np.stack([P.polyval(ts, rows[k]) for k in range(3)], axis=-1)
+    w = values[:, 2]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        xy = values[:, :2] / w[:, None]
+    xy[np.abs(w) < 1e-9 * np.abs(values).max()] = np.nan
+    xy[1:][np.sign(w[1:]) != np.sign(w[:-1])] = np.nan
+    ax.plot(*xy.T, **{"color": "C0", "linewidth": 2.0, **style})
+    return ax
+
+
+def plot_discriminant(ax, discriminant, xlim, roots=(), **style) -> Axes:
+    """The graph of D(x) (ascending coefficients) over xlim, scaled to its largest value there, its real roots marked.
+
+    Notes §19.4: the roots are the x of vertical tangents and of singular points.
+    """
+    check_axes(ax)
+    d = as_float_array(discriminant, "discriminant")
+    x0, x1 = as_interval(xlim, "xlim")
+    xs = np.linspace(x0, x1, 500)
+    values = P.polyval(xs, d)
+    scale = np.abs(values).max() or 1.0
+    ax.axhline(0.0, color="0.6", linewidth=0.8)
+    ax.plot(xs, values / scale, **{"color": "C4", "linewidth": 2.0, "label": "D(x) / max |D|", **style})
+    roots = np.asarray(roots, dtype=float)
+    roots = roots[(roots >= x0) & (roots <= x1)]
+    ax.plot(roots, np.zeros_like(roots), "o", color="C3", markersize=6)
+    ax.set_xlim(x0, x1)
+    ax.set_xlabel("x")
+    return ax

@@ -1,0 +1,257 @@
+"""Explorers of chapter 19 of the notes (plane algebraic curves): a double-point classifier that deforms a cubic
+through crunode, cusp and acnode, the parametrization of a unicursal curve by a pencil of lines through its
+singular point, and a curve's discriminant drawn under its silhouette.
+
+The classifier is Figures 19.2-19.4 in one family, x³ + k x² - 3y² = 0: its
+tangent cone k x² - 3y² at the origin has two real lines for k > 0, one double
+line for k = 0 (Figure 19.3 exactly) and two complex ones for k < 0 (k = -3 is
+Figure 19.4). The pencil explorer is Figures 19.6 and 19.7 with a t slider: the
+line of slope t through the singular point and the one more point where it meets
+the curve. The silhouette explorer turns a curve and shows that the real roots of
+Res_y(f, f_y) are where its outline, seen along y, has vertical tangents or
+crosses itself.
+"""
+
+from __future__ import annotations
+
+import ipywidgets as widgets
+import numpy as np
+from numpy.polynomial import polynomial as P
+
+from cagd_ref import plane_curves
+
+from ..plotting.pencils import set_box
+from ..plotting.singular_points import (
+    SINGULAR_STYLE,
+    plot_curve,
+    plot_discriminant,
+    plot_parametrization,
+    plot_pencil_ray,
+    plot_tangent_cone,
+)
+from ._base import Explorer, TwoPanels, _fmt, _slider, bare_axes
+
+__all__ = [
+    "double_point_kind_explorer",
+    "pencil_parametrization_explorer",
+    "silhouette_explorer",
+    "DoublePointClassifier",
+    "PencilParametrizationExplorer",
+    "SilhouetteExplorer",
+]
+
+
+def _family(k: float) -> np.ndarray:
+    """x³ + k x² - 3y²."""
+    return np.array([[0.0, 0.0, -3.0], [0.0, 0.0, 0.0], [k, 0.0, 0.0], [1.0, 0.0, 0.0]])
+
+
+def _equation(c: np.ndarray) -> str:
+    terms = []
+    for (i, j), v in sorted(np.ndenumerate(c), key=lambda item: (-(item[0][0] + item[0][1]), -item[0][0])):
+        if abs(v) > 1e-12:
+            monomial = ("x" + ("²³⁴"[i - 2] if i > 1 else "") if i else "") + ("y" + ("²³⁴"[j - 2] if j > 1 else "")
+                                                                              if j else "")
+            terms.append(f"{v:+.3g}{monomial}")
+    return " ".join(terms) + " = 0"
+
+
+# ---------------------------------------------------------------- crunode, cusp, acnode
+
+
+class DoublePointClassifier(Explorer):
+    """The cubic x³ + k x² - 3y² = 0 and its tangent cone at the origin, classified. Notes §19.2, Figs. 19.2-19.4."""
+
+    BOX = ((-5.0, 4.0), (-4.5, 4.5))
+
+    def __init__(self, k: float = 3.0):
+        controls = {"k": _slider(widgets.FloatSlider, "k", value=k, min=-4.0, max=6.0, step=0.25,
+                                 readout_format=".2f")}
+        super().__init__(controls)
+
+    def compute(self, k: float) -> dict:
+        k = round(float(k), 10) + 0.0
+        c = _family(k)
+        cone = plane_curves.tangent_cone(c, (0.0, 0.0))
+        a, b, cc = cone
+        return {
+            "k": k,
+            "c": c,
+            "tangent_cone": cone,
+            "discriminant": float(b * b - 4 * a * cc),
+            "kind": plane_curves.classify_double_point(c, (0.0, 0.0)),
+            "directions": plane_curves.tangent_directions(c, (0.0, 0.0)),
+        }
+
+    def draw(self, ax, state: dict) -> None:
+        box = self.BOX
+        plot_curve(ax, state["c"], *box, label="x³ + k x² − 3y² = 0")
+        plot_tangent_cone(ax, state["c"], (0.0, 0.0), *box)
+        set_box(ax, *box)
+        ax.legend(fontsize=7, loc="lower left")
+        ax.set_title(f"k = {state['k']:g}: a {state['kind']} at the origin", fontsize=10)
+        bare_axes(ax)
+
+    def describe(self, state: dict) -> str:
+        a, b, c = state["tangent_cone"]
+        lines = {"crunode": "two real tangent lines (dashed)", "cusp": "one double tangent line, y = 0",
+                 "acnode": "two complex tangent lines: an isolated real point"}[state["kind"]]
+        return "<br>".join([
+            f"tangent cone g₂ = {a:+.3g}a² {b:+.3g}ab {c:+.3g}b² (the lowest part at the origin)",
+            f"B² − 4AC = {state['discriminant']:.3g}: {state['kind']}, {lines}",
+        ])
+
+
+def double_point_kind_explorer(k: float = 3.0) -> DoublePointClassifier:
+    """Slider `k` of the cubic x³ + k x² - 3y² = 0: crunode (k > 0), cusp (k = 0), acnode (k < 0). Notes §19.2.
+
+    `update` returns {"k", "c" the curve, "tangent_cone" (A, B, C), "discriminant" B² - 4AC,
+    "kind", "directions" the unit directions of the real tangents}.
+    """
+    return DoublePointClassifier(k)
+
+
+# ---------------------------------------------------------------- the pencil parametrization
+
+
+CURVES = {
+    "circle x² − 2x + y² (Fig. 19.6)": (np.array([[0.0, 0.0, 1.0], [-2.0, 0.0, 0.0], [1.0, 0.0, 0.0]]),
+                                         (0.0, 0.0), ((-0.8, 2.8), (-1.6, 1.6))),
+    "cubic x³ − 9x² − 3xy + 6y² (Fig. 19.7)": (np.array([[0, 0, 6, 0], [0, -3, 0, 0], [-9, 0, 0, 0], [1, 0, 0, 0]],
+                                                          dtype=float), (0.0, 0.0), ((-4.5, 11.0), (-7.0, 8.0))),
+    "cubic with double point (2, 3) (§19.5)": (np.array([[-21, 25, -9, 1], [46, -23, 3, 0], [-13, 3, 0, 0],
+                                                          [1, 0, 0, 0]], dtype=float), (2.0, 3.0),
+                                                ((-3.0, 7.0), (-2.0, 8.0))),
+    "cubic with coefficients 1…7 (§19.5)": (np.array([[0, 0, 7, 4], [0, 6, 3, 0], [5, 2, 0, 0], [1, 0, 0, 0]],
+                                                      dtype=float), (0.0, 0.0), ((-6.0, 3.0), (-4.0, 4.0))),
+}
+
+
+class PencilParametrizationExplorer(Explorer):
+    """The line of slope t through the singular point and the one more point where it meets the curve. §19.5."""
+
+    def __init__(self, curve: str = "circle x² − 2x + y² (Fig. 19.6)", t: float = 0.5):
+        controls = {
+            "t": _slider(widgets.FloatSlider, "t = slope", value=t, min=-3.0, max=3.0, step=0.05,
+                         readout_format=".2f"),
+            "curve": widgets.Dropdown(description="curve", options=list(CURVES), value=curve),
+        }
+        super().__init__(controls)
+
+    def compute(self, t: float, curve: str) -> dict:
+        c, point, box = CURVES[curve]
+        xyw = plane_curves.parametrize_by_pencil(c, point)
+        try:
+            xy = plane_curves.pencil_point(xyw, t)
+        except ValueError:
+            xy = None  # the line of slope t meets the curve only at infinity besides the point
+        residual = None if xy is None else float(P.polyval2d(xy[0], xy[1], c) / np.abs(c).sum())
+        return {"curve": curve, "c": c, "point": np.array(point), "t": float(t), "xyw": xyw, "xy": xy,
+                "residual": residual, "box": box}
+
+    def draw(self, ax, state: dict) -> None:
+        box = state["box"]
+        plot_curve(ax, state["c"], *box, colors="0.75", linewidths=5.0)
+        plot_parametrization(ax, state["xyw"], (-12.0, 12.0), samples=1600, label="(X(t)/W(t), Y(t)/W(t))")
+        plot_pencil_ray(ax, state["point"], state["t"], *box, label=f"y − y0 = {state['t']:.2f}(x − x0)")
+        ax.plot(*state["point"], **SINGULAR_STYLE)
+        if state["xy"] is not None:
+            ax.plot(*state["xy"], "o", color="C2", markersize=9, markeredgecolor="black")
+        set_box(ax, *box)
+        ax.legend(fontsize=7, loc="lower left")
+        ax.set_title("one more intersection with each line of the pencil", fontsize=10)
+        bare_axes(ax)
+
+    def describe(self, state: dict) -> str:
+        x, y, w = state["xyw"]
+
+        def text(p):
+            return " ".join(f"{v:+.3g}t^{k}" if k else f"{v:+.3g}" for k, v in enumerate(p) if abs(v) > 1e-12)
+
+        where = "at infinity" if state["xy"] is None else f"{_fmt(state['xy'])}, f there {state['residual']:.1e}"
+        return "<br>".join([
+            f"{_equation(state['c'])}, singular point {_fmt(state['point'])}",
+            f"x = ({text(x)}) / ({text(w)}),  y = ({text(y)}) / ({text(w)})",
+            f"t = {state['t']:.2f}: the point {where}",
+        ])
+
+
+def pencil_parametrization_explorer(curve: str = "circle x² − 2x + y² (Fig. 19.6)",
+                                    t: float = 0.5) -> PencilParametrizationExplorer:
+    """Slider `t` (the slope of the line through the singular point) and dropdown `curve`. Notes §19.5.
+
+    `update` returns {"curve", "c", "point" the singular point, "t", "xyw" (3, n+1)
+    the parametrization, "xy" the curve's point on the line (None at infinity),
+    "residual" f(xy) relative to the coefficients, "box"}.
+    """
+    return PencilParametrizationExplorer(curve, t)
+
+
+# ---------------------------------------------------------------- discriminant and silhouette
+
+
+SILHOUETTES = {
+    "cubic of §19.5": (np.array([[-21, 25, -9, 1], [46, -23, 3, 0], [-13, 3, 0, 0], [1, 0, 0, 0]], dtype=float),
+                       (2.0, 3.0), ((-3.0, 7.0), (-2.0, 8.0))),
+    "crunode x³ + 9x² − 12y² (Fig. 19.2)": (np.array([[0, 0, -12], [0, 0, 0], [9, 0, 0], [1, 0, 0]], dtype=float),
+                                            (-4.0, 0.0), ((-12.0, 4.0), (-8.0, 8.0))),
+    "circle of Fig. 19.5": (np.array([[-4, -15, 6], [-2, 0, 0], [6, 0, 0]], dtype=float), (1 / 6, 1.25),
+                            ((-2.0, 2.4), (-1.0, 3.5))),
+}
+
+
+class SilhouetteExplorer(TwoPanels, Explorer):
+    """A curve turned about a point, with vertical lines at the real roots of its discriminant D(x). Notes §19.4."""
+
+    def __init__(self, curve: str = "cubic of §19.5", angle: float = 0.0):
+        controls = {
+            "angle": _slider(widgets.FloatSlider, "turn (°)", value=angle, min=-90.0, max=90.0, step=2.0,
+                             readout_format=".0f"),
+            "curve": widgets.Dropdown(description="curve", options=list(SILHOUETTES), value=curve),
+        }
+        super().__init__(controls)
+
+    def compute(self, angle: float, curve: str) -> dict:
+        base, centre, box = SILHOUETTES[curve]
+        phi = np.radians(angle)
+        inverse = np.array([[np.cos(phi), np.sin(phi)], [-np.sin(phi), np.cos(phi)]])
+        centre = np.asarray(centre)
+        c = plane_curves.transform_implicit(base, inverse, centre - inverse @ centre)
+        d = plane_curves.curve_discriminant(c)
+        roots = P.polyroots(d) if len(d) > 1 else np.zeros(0)
+        real = np.sort(roots[np.abs(roots.imag) <= 1e-6 * (1 + np.abs(roots))].real)
+        return {"curve": curve, "angle": float(angle), "c": c, "discriminant": d, "roots": real, "box": box}
+
+    def draw(self, ax, state: dict) -> None:
+        box = state["box"]
+        plot_curve(ax, state["c"], *box, label="f(x, y) = 0")
+        for x in state["roots"]:
+            if box[0][0] <= x <= box[0][1]:
+                ax.axvline(x, color="C3", linewidth=0.9, linestyle="--")
+        set_box(ax, *box)
+        ax.legend(fontsize=7, loc="upper left")
+        ax.set_title("vertical tangents and crossings are roots of Res_y(f, f_y)", fontsize=10)
+        bare_axes(ax)
+        lower = self.lower_axes()
+        plot_discriminant(lower, state["discriminant"], box[0], state["roots"])
+        for x in state["roots"]:
+            if box[0][0] <= x <= box[0][1]:
+                lower.axvline(x, color="C3", linewidth=0.9, linestyle="--")
+        lower.legend(fontsize=7, loc="upper left")
+        lower.set_yticks([])
+
+    def describe(self, state: dict) -> str:
+        roots = ", ".join(f"{x:.4g}" for x in state["roots"]) or "none"
+        return "<br>".join([
+            f"D(x) = Res_y(f, ∂f/∂y) has degree {len(state['discriminant']) - 1}; real roots x = {roots}",
+            "a simple root: a vertical tangent; a double root: a double point (or two vertical tangents over one x)",
+        ])
+
+
+def silhouette_explorer(curve: str = "cubic of §19.5", angle: float = 0.0) -> SilhouetteExplorer:
+    """Slider `angle` (the curve turned about a point, degrees) and dropdown `curve`: D(x) under the curve. §19.4.
+
+    `update` returns {"curve", "angle", "c" the turned curve, "discriminant" D (ascending in x),
+    "roots" its real roots, "box"}.
+    """
+    return SilhouetteExplorer(curve, angle)
