@@ -1,4 +1,5 @@
-"""The `cagd` command: list the course, self-check a notebook, validate suites, grade a class, build the book."""
+"""The `cagd` command: list the course, self-check a notebook, validate suites, grade a class, export its
+grades, release the course to a class, build the book."""
 
 from __future__ import annotations
 
@@ -87,13 +88,74 @@ def _cmd_grade(args) -> int:
             args.force,
             chapters=args.chapter,
             allow_unconfined=args.allow_unconfined,
+            students=args.student,
         )
-    except UnconfinedError as err:
+    except (UnconfinedError, RuntimeError) as err:
         print(f"cagd grade: {err}", file=sys.stderr)
         return 2
     print(summary)
-    print(f"gradebook: {Path(args.out) / 'gradebook.csv'}; feedback: {Path(args.out)}/<submission>/feedback.html")
+    out = Path(args.out)
+    print(f"gradebook: {out / 'gradebook.csv'}; class report: {out / 'report.html'}; "
+          f"feedback: {out}/<student>/feedback.html and {out}/<student>/chNN/")
     return 0
+
+
+def _cmd_export(args) -> int:
+    from .grading.lms import export
+    from .manifest import load_course
+
+    if args.canvas is None and args.long is None:
+        print("cagd export: say what to write: --canvas FILE and/or --long FILE", file=sys.stderr)
+        return 2
+    written, unmatched = export(args.grades, load_course(), args.canvas, args.long, args.roster)
+    for path in written:
+        print(f"wrote {path}")
+    if unmatched:
+        print(f"cagd export: {len(unmatched)} student(s) not in the roster, exported with their own names: "
+              + ", ".join(unmatched[:20]), file=sys.stderr)
+    return 0
+
+
+def _cmd_report(args) -> int:
+    from .grading.class_report import write_report
+    from .manifest import load_course
+
+    if not any(Path(args.grades).glob("*/ch[0-9][0-9]/record.json")):
+        print(f"cagd report: {args.grades} holds no graded notebooks", file=sys.stderr)
+        return 2
+    print(f"class report: {write_report(args.grades, load_course())}")
+    return 0
+
+
+def _cmd_release(args) -> int:
+    from .grading.release import release
+
+    try:
+        made = release(args.out, args.chapter, book=args.book, force=args.force)
+    except (FileExistsError, RuntimeError) as err:
+        print(f"cagd release: {err}", file=sys.stderr)
+        return 2
+    print(f"release written to {made.out}: {len(made.exercises)} exercise notebook(s) with a self-check of "
+          f"{len(made.checked)} exercise(s), {len(made.chapters)} chapter notebook(s) "
+          f"({made.dropped_cells} reference-source cell(s) dropped)"
+          + (f", the book in {made.book}" if made.book else ""))
+    print("checked: no reference implementation of a graded function and no hidden case in it")
+    for problem in made.problems:
+        print(f"cagd release: {problem}", file=sys.stderr)
+    return 1 if made.problems else 0
+
+
+def _cmd_stamp(args) -> int:
+    from .grading.layouts import stamp_exercise_notebooks
+    from .manifest import load_course
+
+    course = load_course()
+    changed = stamp_exercise_notebooks(course, check=args.check)
+    for path in changed:
+        print(("lacks metadata.cagd.chapter: " if args.check else "stamped ") + str(path.relative_to(course.root)))
+    if not changed:
+        print("every exercise notebook carries metadata.cagd.chapter")
+    return 1 if args.check and changed else 0
 
 
 def _cmd_book(args) -> int:
@@ -149,7 +211,8 @@ def _add_limits(parser: argparse.ArgumentParser) -> None:
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="cagd",
-        description="The CAGD course: list chapters, check and grade exercise notebooks, build the HTML book.",
+        description="The CAGD course: list chapters, check and grade exercise notebooks, export grades, release "
+        "the course to a class, build the HTML book.",
     )
     parser.add_argument(
         "--course",
@@ -176,9 +239,19 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--seed", type=int, default=0, help="seed of the random cases (default 0)")
     p.set_defaults(run=_cmd_validate)
 
-    p = sub.add_parser("grade", help="grade submissions into a gradebook, feedback pages and results.json")
-    p.add_argument("paths", nargs="+", type=Path, metavar="PATH", help="notebooks or folders of notebooks")
-    p.add_argument("--out", type=Path, required=True, help="output folder (gradebook.csv, <submission>/...)")
+    p = sub.add_parser(
+        "grade",
+        help="grade a class's notebooks, each on its own chapter, into the semester's gradebook",
+        description="Grade every notebook under the paths on its own chapter (from metadata.cagd.chapter, else "
+        "the file name, else its title) into GRADES: gradebook.csv (one row per student, a column per exercise "
+        "graded so far, a total per chapter and overall), report.html (the class at a glance), and per student "
+        "feedback.html and results.json (Gradescope), per chapter in <student>/chNN/. Layouts: a folder per "
+        "student (SUBMISSIONS/<student>/<NN-slug>.ipynb, as nbgrader collects them) or flat files of an LMS "
+        "download (Canvas: <name>_<userid>_<submissionid>_<original>.ipynb, LATE kept). Run it again as "
+        "work comes in: graded, unchanged notebooks are skipped, the others added.",
+    )
+    p.add_argument("paths", nargs="+", type=Path, metavar="PATH", help="notebooks, or folders of either layout")
+    p.add_argument("--out", type=Path, required=True, metavar="GRADES", help="the grades folder (kept all semester)")
     p.add_argument("--jobs", type=int, default=1, help="submissions graded in parallel (default 1)")
     p.add_argument(
         "--allow-unconfined",
@@ -186,16 +259,65 @@ def build_parser() -> argparse.ArgumentParser:
         help="grade even where graded code cannot be confined (it could then read the reference and the hidden "
         "suites and write your files); without it such grading is refused",
     )
-    p.add_argument("--force", action="store_true", help="regrade submissions already in the gradebook")
+    p.add_argument("--force", action="store_true", help="regrade notebooks already graded, even unchanged")
     p.add_argument(
         "--chapter",
         type=int,
         action="append",
         metavar="N",
-        help="grade only chapter N's exercises (repeatable; default all)",
+        help="grade only chapter N's notebooks (repeatable; default all). A single --chapter also names the "
+        "chapter of notebooks whose own chapter is unclear",
+    )
+    p.add_argument(
+        "--student",
+        action="append",
+        metavar="NAME",
+        help="grade only this student (folder name, Canvas name or key; repeatable): with --force, a re-grade "
+        "that changes only their cells",
     )
     _add_limits(p)
     p.set_defaults(run=_cmd_grade)
+
+    p = sub.add_parser(
+        "export",
+        help="write the gradebook for an LMS: Canvas's import CSV and/or a plain long CSV",
+        description="Canvas: Student, ID, SIS User ID, SIS Login ID, Section, then one column per chapter with "
+        "its points possible in the second row; import it in Canvas's Gradebook (Import). Long: student, "
+        "chapter, exercise, score, max, status, one line each.",
+    )
+    p.add_argument("grades", type=Path, metavar="GRADES", help="the grades folder of `cagd grade --out`")
+    p.add_argument("--canvas", type=Path, metavar="FILE", help="write Canvas's gradebook import CSV here")
+    p.add_argument("--long", type=Path, metavar="FILE", help="write the long CSV here")
+    p.add_argument(
+        "--roster",
+        type=Path,
+        metavar="CSV",
+        help="Canvas's own gradebook export: its students (matched by ID, SIS login, SIS id or name) and "
+        "assignment columns named 'Chapter N...' are used as they are",
+    )
+    p.set_defaults(run=_cmd_export)
+
+    p = sub.add_parser("report", help="rewrite GRADES/report.html from the graded notebooks")
+    p.add_argument("grades", type=Path, metavar="GRADES", help="the grades folder of `cagd grade --out`")
+    p.set_defaults(run=_cmd_report)
+
+    p = sub.add_parser(
+        "release",
+        help="write what a class's students get: exercises, chapters and an offline self-check without answers",
+        description="OUT/exercises: the exercise notebooks and beside them a small cagd_course package whose "
+        "check() runs the visible cases (answers bundled as data) and names the hidden groups; no reference "
+        "implementation of a graded function and no hidden case is in OUT (checked before it is written). "
+        "OUT/chapters: the chapter notebooks without their reference-source cells; with --book also OUT/book.",
+    )
+    p.add_argument("out", type=Path, metavar="OUT", help="a new (or empty) folder outside the course")
+    p.add_argument("--chapter", type=int, action="append", metavar="N", help="only chapter N (repeatable)")
+    p.add_argument("--book", action="store_true", help="also build the HTML book of the released chapters (minutes)")
+    p.add_argument("--force", action="store_true", help="replace OUT if it is not empty")
+    p.set_defaults(run=_cmd_release)
+
+    p = sub.add_parser("stamp", help="write metadata.cagd.chapter into every exercise notebook of book.toml")
+    p.add_argument("--check", action="store_true", help="change nothing; fail if a notebook lacks it")
+    p.set_defaults(run=_cmd_stamp)
 
     p = sub.add_parser("book", help="execute every chapter and write the HTML book (and with --pdf, a PDF of it)")
     p.add_argument(

@@ -1,30 +1,32 @@
-"""`cagd grade`: grade a whole class of notebooks into a gradebook, feedback pages and Gradescope JSON.
+"""`cagd grade`: grade a class's notebooks, each on its own chapter, into the semester's gradebook.
 
-Every submission gets exactly one gradebook row whatever it does, with the
-confinement its code ran under. Files are written atomically (temporary file,
-then rename), the gradebook after every submission, so an interrupted run
-loses nothing and resumes where it stopped. With ``jobs`` > 1 the submissions
-are graded by that many grading processes, each with its own zygote: the
-grader's side (drawing cases, computing the reference's answers, comparing)
-costs as much CPU as running the submission, and one process holds one core.
-Grading refuses to start where graded code cannot be confined, unless the
-instructor allows it and is told exactly what that means.
+Submissions come in nbgrader's folder-per-student layout or as an LMS bulk download (see
+`layouts`); each notebook is graded on the exercises of its chapter only, and its record,
+feedback page and Gradescope JSON go to ``GRADES/<submission>/chNN/``; the student's pages for
+the whole semester to ``GRADES/<submission>/feedback.html`` and ``results.json``. The gradebook
+(`gradebook`) is rebuilt from the records after every submission, so an interrupted run loses
+nothing and resumes where it stopped: a notebook already graded, unchanged, is skipped unless
+``force``. With ``jobs`` > 1 the submissions are graded by that many grading processes, each with
+its own zygote: the grader's side (drawing cases, computing the reference's answers, comparing)
+costs as much CPU as running the submission, and one process holds one core. Grading refuses to
+start where graded code cannot be confined, unless the instructor allows it and is told exactly
+what that means. At the end the class report (`class_report`) is written.
 """
 
 from __future__ import annotations
 
-import csv
 import dataclasses
-import io
+import hashlib
+import html
 import json
 import os
+import re
 import selectors
 import subprocess
 import sys
-import tempfile
 import time
 import traceback
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 from tqdm import tqdm
@@ -33,128 +35,159 @@ from ..manifest import load_course
 from . import runner, sandbox
 from .engine import grade_statements, load_exercises, prepare, submission_seed
 from .extract import SubmissionError, extract_notebook
+from .gradebook import (
+    GRADEBOOK,
+    UNASSIGNED,
+    atomic_write,
+    chapter_folder,
+    exclusive,
+    gradebook_text,
+    load_records,
+    read_gradebook,
+    unassigned_text,
+    write_record,
+)
+from .layouts import Found, find_submissions
 from .report import feedback_html, gradescope_results, status_of
 from .runner import Limits
+from .similarity import function_fingerprints
 
-__all__ = ["GradeRow", "UnconfinedError", "collect_submissions", "grade_class", "read_gradebook", "GRADEBOOK"]
-
-GRADEBOOK = "gradebook.csv"
+__all__ = ["ClassSummary", "UnconfinedError", "grade_class", "grade_one", "read_gradebook", "GRADEBOOK"]
 
 
 class UnconfinedError(RuntimeError):
     """Graded code cannot be confined on this machine, and grading it unconfined was not allowed."""
 
 
-@dataclass(frozen=True)
-class GradeRow:
-    """One gradebook line; `sandbox` is the confinement the submission's code ran under ("" if none ran)."""
-
-    submission: str
-    score: float
-    max_score: float
-    status: str
-    exercises: dict[str, float]
-    seed: int
-    seconds: dict[str, float] | None = None
-    sandbox: str = ""
-    confined: bool | None = None
-
-    def as_csv(self, exercise_ids: list[str]) -> list[str]:
-        return [self.submission, _number(self.score), _number(self.max_score), self.status] + [
-            _number(self.exercises.get(eid, 0.0)) for eid in exercise_ids
-        ] + [str(self.seed), self.sandbox]
-
-
-def _number(value: float) -> str:
-    return f"{value:.4f}".rstrip("0").rstrip(".") if value else "0"
-
-
-def collect_submissions(paths: list[Path]) -> dict[str, Path]:
-    """Notebooks named by the paths (files, or folders of .ipynb files), keyed by submission name (the stem)."""
-    found: dict[str, Path] = {}
-    for path in map(Path, paths):
-        if path.is_dir():
-            files = sorted(p for p in path.glob("*.ipynb") if p.is_file())
-        elif path.is_file():
-            files = [path]
-        else:
-            raise FileNotFoundError(f"no such file or folder: {path}")
-        for file in files:
-            if file.stem in found and found[file.stem] != file.resolve():
-                raise ValueError(f"two submissions are named {file.stem!r}: {found[file.stem]} and {file}")
-            found[file.stem] = file.resolve()
-    return dict(sorted(found.items()))
-
-
-def atomic_write(path: Path, text: str) -> None:
-    """Write a file so that readers see the old or the new content, never half of it."""
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, temporary = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.")
+def _digest(path: Path) -> str:
     try:
-        with os.fdopen(fd, "w", encoding="utf-8", newline="") as handle:
-            handle.write(text)
-        os.replace(temporary, path)
-    except BaseException:
-        os.unlink(temporary)
-        raise
+        return hashlib.sha256(Path(path).read_bytes()).hexdigest()
+    except OSError:
+        return ""
 
 
-def read_gradebook(path: Path) -> dict[str, list[str]]:
-    """Rows of an existing gradebook by submission name (empty if there is none)."""
-    if not path.is_file():
-        return {}
-    with path.open(encoding="utf-8", newline="") as handle:
-        rows = list(csv.reader(handle))
-    return {row[0]: row for row in rows[1:] if row}
+def _task(found: Found) -> dict:
+    return {
+        "path": str(found.path),
+        "submission": found.submission,
+        "student": found.student,
+        "lms_id": found.lms_id,
+        "late": found.late,
+        "original": found.original,
+        "chapter": found.chapter,
+        "how": found.how,
+        "notes": list(found.notes),
+        "sha256": _digest(found.path),
+    }
 
 
-def _gradebook_text(header: list[str], rows: dict[str, list[str]]) -> str:
-    buffer = io.StringIO()
-    writer = csv.writer(buffer, lineterminator="\n")
-    writer.writerow(header)
-    for name in sorted(rows):
-        writer.writerow(rows[name])
-    return buffer.getvalue()
+def _categories(result) -> dict[str, list]:
+    """Per category of cases: [passed, in all, visible] (names only: never the inputs)."""
+    return {
+        category: [sum(c.passed for c in cases), len(cases), bool(cases[0].visible)]
+        for category, cases in result.categories().items()
+    }
 
 
 def grade_one(
-    name: str, path: Path, exercises, base_seed: int, limits: Limits, out: Path, require_confinement: bool = True
-) -> GradeRow:
-    """Grade one notebook and write its feedback page and results.json; return its gradebook row."""
-    seed = submission_seed(base_seed, name)
+    task: dict, exercises, base_seed: int, limits: Limits, out: Path, require_confinement: bool = True
+) -> dict:
+    """Grade one notebook on its chapter's `exercises`; write its feedback and results.json; return its record."""
+    name, chapter = task["submission"], task["chapter"]
+    seed = submission_seed(base_seed, name if chapter is None else f"{name}/ch{chapter:02d}")
     # Cases and reference answers exist before any of the submission's code runs.
     prepared = prepare(exercises, seed)
     max_score = round(sum(points for _, points in exercises.values()), 4)
+    record = {
+        **{k: task[k] for k in ("submission", "student", "lms_id", "late", "original", "chapter", "how", "sha256")},
+        "file": task["path"],
+        "seed": seed,
+        "max_score": max_score,
+        "score": 0.0,
+        "exercises": {},
+        "fingerprints": {},
+        "sandbox": "",
+        "confined": None,
+        "graded": time.strftime("%Y-%m-%d %H:%M:%S"),
+    }
+    folder = chapter_folder(out, name, chapter)
+    title = f"{task['student']}, chapter {chapter}"
     try:
-        submission = extract_notebook(path)
+        submission = extract_notebook(task["path"])
     except SubmissionError as err:
-        notes = [f"{err.status}: {err.detail}"]
-        row = GradeRow(name, 0.0, max_score, err.status, {}, seed)
-        _write_feedback(out / name, name, [], 0.0, max_score, notes)
-        return row
+        notes = task["notes"] + [f"{err.status}: {err.detail}"]
+        _write_feedback(folder, title, [], 0.0, max_score, notes)
+        return {**record, "status": err.status, "notes": notes}
     outcome = grade_statements(submission.statements, prepared, limits, require_confinement=require_confinement)
-    notes = submission.skipped + outcome.run.load_problems
+    notes = task["notes"] + submission.skipped + outcome.run.load_problems
     problems = ["output truncated"] if outcome.run.output_truncated else []
-    if not submission.defined_names() & {exercise.function for exercise, _ in exercises.values()}:
+    functions = {exercise.function: eid for eid, (exercise, _) in exercises.items()}
+    if not submission.defined_names() & set(functions):
         problems.append("none of the exercise functions is defined")
-    status = status_of(outcome.exercises, problems)
-    _write_feedback(out / name, name, outcome.exercises, outcome.score, outcome.max_score, notes)
-    return GradeRow(
-        name,
-        outcome.score,
-        outcome.max_score,
-        status,
-        {r.id: r.score for r in outcome.exercises},
-        seed,
-        {r.id: r.seconds for r in outcome.exercises},
-        outcome.run.sandbox,
-        outcome.run.confined,
+    _write_feedback(folder, title, outcome.exercises, outcome.score, outcome.max_score, notes)
+    record.update(
+        score=outcome.score,
+        max_score=outcome.max_score,
+        status=status_of(outcome.exercises, problems),
+        notes=notes,
+        sandbox=outcome.run.sandbox,
+        confined=outcome.run.confined,
+        fingerprints=function_fingerprints(submission.statements, functions),
+        exercises={
+            r.id: {
+                "score": r.score,
+                "points": r.points,
+                "seconds": round(r.seconds, 4),
+                "stopped": r.stopped,
+                "categories": _categories(r),
+            }
+            for r in outcome.exercises
+        },
     )
+    return record
 
 
-def _write_feedback(folder: Path, name: str, results, score: float, max_score: float, notes: list[str]) -> None:
-    atomic_write(folder / "feedback.html", feedback_html(name, results, score, max_score, notes))
+def _write_feedback(folder: Path, title: str, results, score: float, max_score: float, notes: list[str]) -> None:
+    atomic_write(folder / "feedback.html", feedback_html(title, results, score, max_score, notes))
     atomic_write(folder / "results.json", json.dumps(gradescope_results(results, score, notes), indent=2) + "\n")
+
+
+_BODY = re.compile(r"<body>(.*)</body>", re.S)
+_STYLE = re.compile(r"<style>(.*?)</style>", re.S)
+
+
+def write_student_pages(out: Path, submission: str, records: list[dict]) -> None:
+    """The student's semester: every graded chapter's feedback on one page, and one results.json of them all."""
+    records = sorted(records, key=lambda r: r["chapter"])
+    sections, tests, outputs, style = [], [], [], ""
+    for record in records:
+        folder = chapter_folder(out, submission, record["chapter"])
+        try:
+            page = (folder / "feedback.html").read_text(encoding="utf-8")
+            results = json.loads((folder / "results.json").read_text(encoding="utf-8"))
+        except (OSError, ValueError):
+            continue
+        body = _BODY.search(page)
+        style = style or (_STYLE.search(page).group(1) if _STYLE.search(page) else "")
+        sections.append(f"<section id='ch{record['chapter']:02d}'>{body.group(1) if body else ''}</section>")
+        tests += results.get("tests", [])
+        if results.get("output"):
+            outputs.append(f"chapter {record['chapter']}: {results['output']}")
+    total = round(sum(float(r["score"]) for r in records), 4)
+    name = html.escape(records[0]["student"]) if records else html.escape(submission)
+    index = "".join(
+        f"<li><a href='#ch{r['chapter']:02d}'>chapter {r['chapter']}</a>: {float(r['score']):g} / "
+        f"{float(r['max_score']):g}</li>" for r in records
+    )
+    page = (
+        "<!DOCTYPE html><html lang='en'><head><meta charset='utf-8'>"
+        f"<title>Feedback: {name}</title><style>{style}section{{border-top:2px solid #ddd;margin-top:2rem}}"
+        f"</style></head><body><h1>Feedback for {name}</h1><p>Chapters graded so far:</p><ul>{index}</ul>"
+        + "\n".join(sections) + "</body></html>\n"
+    )
+    atomic_write(Path(out) / submission / "feedback.html", page)
+    combined = {"score": total, "output": "\n".join(outputs), "tests": tests}
+    atomic_write(Path(out) / submission / "results.json", json.dumps(combined, indent=2) + "\n")
 
 
 @dataclass
@@ -168,13 +201,30 @@ class ClassSummary:
     seconds: float
     confinement: str = ""
     unconfined: str = ""
+    by_chapter: dict = field(default_factory=dict)  # chapter -> (graded, mean, max)
+    unassigned: list = field(default_factory=list)  # rows of unassigned.csv
+    other_chapters: int = 0
+    report: str = ""
 
     def __str__(self) -> str:
+        if len(self.by_chapter) > 1:
+            means = "mean score by chapter: " + ", ".join(
+                f"{ch}: {mean:.2f} / {top:g} ({n})" for ch, (n, mean, top) in sorted(self.by_chapter.items())
+            )
+        else:
+            means = f"mean score {self.mean_score:.2f} / {self.max_score:g}"
         text = (
             f"graded {self.graded} submission(s) (skipped {self.skipped} already graded) in {self.seconds:.1f} s; "
-            f"{self.failed_to_run} did not run cleanly; mean score {self.mean_score:.2f} / {self.max_score:g}"
+            f"{self.failed_to_run} did not run cleanly; {means}"
             + (f"; slowest exercise {self.slowest_exercise}" if self.slowest_exercise else "")
         )
+        if self.other_chapters:
+            text += f"\nleft out {self.other_chapters} notebook(s) of other chapters (--chapter)"
+        if self.unassigned:
+            text += f"\nnot graded: {len(self.unassigned)} notebook(s) (see {UNASSIGNED}):"
+            text += "".join(f"\n  {row['file']}: {row['reason']}" for row in self.unassigned[:20])
+            if len(self.unassigned) > 20:
+                text += f"\n  ... and {len(self.unassigned) - 20} more"
         if self.confinement:
             text += f"\nconfinement: {self.confinement}"
         if self.unconfined:
@@ -196,8 +246,27 @@ def _unconfined_text(probe: runner.RunResult, allowed: bool) -> str:
     return "\n".join(lines)
 
 
+class _Exercises:
+    """The hidden suites of each chapter, loaded when first needed (a broken chapter stops only its own notebooks)."""
+
+    def __init__(self, course):
+        self.course = course
+        self.loaded: dict[int, object] = {}
+
+    def __call__(self, chapter: int):
+        if chapter not in self.loaded:
+            ids = next((list(c.exercise_points) for c in self.course.chapters if c.number == chapter), [])
+            try:
+                if not ids:
+                    raise KeyError(f"book.toml lists no graded exercise for chapter {chapter}")
+                self.loaded[chapter] = load_exercises(self.course, ids)
+            except Exception as err:  # noqa: BLE001 - a broken suite is reported for its own notebooks
+                self.loaded[chapter] = err
+        return self.loaded[chapter]
+
+
 class _GradingProcess:
-    """A separate grading process of a `jobs` run: one submission at a time, rows back as JSON lines.
+    """A separate grading process of a `jobs` run: one submission at a time, records back as JSON lines.
 
     A fresh interpreter rather than a fork or a multiprocessing pool: it inherits no thread, no
     zygote and nothing of the caller's main module, and a submission cannot reach it anyway.
@@ -221,14 +290,14 @@ class _GradingProcess:
         self.proc.stdin.write(json.dumps(message) + "\n")
         self.proc.stdin.flush()
 
-    def receive(self) -> GradeRow:
+    def receive(self) -> dict:
         line = self.proc.stdout.readline()
         if not line:
             raise RuntimeError(f"a grading process ended unexpectedly (exit code {self.proc.wait()})")
         message = json.loads(line)
         if "error" in message:
             raise RuntimeError(f"a grading process failed:\n{message['error']}")
-        return GradeRow(**message["row"])
+        return message["record"]
 
     def close(self) -> None:
         try:
@@ -246,17 +315,16 @@ def _serve_grading() -> None:
     os.dup2(2, 1)  # prints of the grading code must not corrupt the channel
     config = json.loads(sys.stdin.readline())
     runner.set_owner(config["owner"])
-    exercises = load_exercises(load_course(), config["ids"])
+    suites = _Exercises(load_course())
     limits = Limits(**config["limits"])
     try:
         for line in sys.stdin:
             task = json.loads(line)
             try:
-                row = grade_one(
-                    task["name"], Path(task["path"]), exercises, config["seed"], limits, Path(config["out"]),
-                    config["require"],
+                record = grade_one(
+                    task, suites(task["chapter"]), config["seed"], limits, Path(config["out"]), config["require"]
                 )
-                message = {"row": dataclasses.asdict(row)}
+                message = {"record": record}
             except Exception:  # noqa: BLE001 - reported to the grading run, which stops
                 message = {"error": traceback.format_exc()}
             channel.write(json.dumps(message) + "\n")
@@ -265,21 +333,20 @@ def _serve_grading() -> None:
         runner.shutdown()
 
 
-def _graded_rows(todo: dict[str, Path], exercises, ids, seed: int, limits: Limits, out: Path, require: bool, jobs: int):
-    """Grade `todo`, yielding each row as it is ready: in this process, or in `jobs` grading processes."""
+def _graded(todo: list[dict], suites: _Exercises, seed: int, limits: Limits, out: Path, require: bool, jobs: int):
+    """Grade `todo`, yielding each record as it is ready: in this process, or in `jobs` grading processes."""
     if jobs <= 1 or len(todo) <= 1:
-        for name, path in todo.items():
-            yield grade_one(name, path, exercises, seed, limits, out, require)
+        for task in todo:
+            yield grade_one(task, suites(task["chapter"]), seed, limits, out, require)
         return
     config = {
-        "ids": ids,
         "owner": os.getpid(),
         "limits": dataclasses.asdict(limits),
         "seed": seed,
         "out": str(Path(out).resolve()),
         "require": require,
     }
-    waiting = [{"name": name, "path": str(path)} for name, path in todo.items()][::-1]
+    waiting = list(todo)[::-1]
     processes = [_GradingProcess(config) for _ in range(min(jobs, len(todo)))]
     selector = selectors.DefaultSelector()
     try:
@@ -302,6 +369,53 @@ def _graded_rows(todo: dict[str, Path], exercises, ids, seed: int, limits: Limit
             process.close()
 
 
+def _check_chapters(course, chapters: list[int] | None) -> None:
+    if not chapters:
+        return
+    known = {c.number for c in course.chapters}
+    unknown = sorted(set(chapters) - known)
+    if unknown:
+        raise ValueError(f"no chapter {unknown} in book.toml (chapters: {sorted(known)})")
+
+
+def _plan(found: list[Found], chapters, students, suites: _Exercises):
+    """Split the notebooks into those to grade (one per student and chapter) and those reported instead."""
+    unassigned, other = [], 0
+    groups: dict[tuple[str, int], list[Found]] = {}
+    for item in found:
+        if students and item.submission not in students and item.student not in students:
+            continue
+        if item.chapter is None:
+            unassigned.append({"submission": item.submission, "file": str(item.path), "reason": item.problem})
+            continue
+        if chapters and item.chapter not in chapters:
+            other += 1
+            continue
+        groups.setdefault((item.submission, item.chapter), []).append(item)
+    tasks = []
+    for (submission, chapter), items in sorted(groups.items()):
+        clear = [i for i in items if not i.unclear]
+        if clear and len(clear) < len(items):
+            # --chapter names the chapter of unclear notebooks only where the student has no clear one.
+            for item in items:
+                if item.unclear:
+                    unassigned.append({"submission": submission, "file": str(item.path), "reason": item.unclear})
+            items = clear
+        if len(items) > 1:
+            names = ", ".join(sorted(str(i.path) for i in items))
+            for item in items:
+                unassigned.append({"submission": submission, "file": str(item.path),
+                                   "reason": f"{len(items)} notebooks of this student for chapter {chapter}: {names}"})
+            continue
+        suite = suites(chapter)
+        if isinstance(suite, Exception):
+            unassigned.append({"submission": submission, "file": str(items[0].path),
+                               "reason": f"chapter {chapter} cannot be graded: {suite}"})
+            continue
+        tasks.append(_task(items[0]))
+    return tasks, unassigned, other
+
+
 def grade_class(
     paths,
     out,
@@ -312,67 +426,86 @@ def grade_class(
     progress: bool = True,
     chapters: list[int] | None = None,
     allow_unconfined: bool = False,
+    students: list[str] | None = None,
+    report: bool = True,
 ) -> ClassSummary:
-    """Grade every submission under `paths` into `out` (on the exercises of `chapters`, default all).
+    """Grade every notebook under `paths` on its own chapter into the grades folder `out`.
 
-    Submissions already in the gradebook are skipped unless `force`. Raises `UnconfinedError`
-    before grading anyone where graded code cannot be confined, unless `allow_unconfined`.
+    chapters: grade only these chapters (a single one also decides notebooks whose chapter is
+    unclear); students: only these students (submission keys or names). Notebooks already graded
+    and unchanged are skipped unless `force`. Raises `UnconfinedError` before grading anyone where
+    graded code cannot be confined, unless `allow_unconfined`.
     """
     started = time.monotonic()
     out = Path(out)
-    submissions = collect_submissions(paths)
     course = load_course()
-    ids = _chapter_ids(course, chapters)
-    exercises = load_exercises(course, ids)
+    _check_chapters(course, chapters)
+    found = find_submissions(paths, course, chapters)
+    suites = _Exercises(course)
+    tasks, unassigned, other = _plan(found, chapters, set(students or ()), suites)
     try:
         probe = runner.probe(limits)
         if not probe.confined and not allow_unconfined:
             raise UnconfinedError(_unconfined_text(probe, allowed=False))
-        out.mkdir(parents=True, exist_ok=True)
-        exercise_ids = list(exercises)
-        header = ["submission", "score", "max_score", "status"] + exercise_ids + ["seed", "confinement"]
-        gradebook = out / GRADEBOOK
-        rows = {} if force else {k: v for k, v in read_gradebook(gradebook).items() if k in submissions}
-        todo = {name: path for name, path in submissions.items() if name not in rows}
-        new_rows: list[GradeRow] = []
-        bar = tqdm(total=len(todo), desc="grading", unit="submission", disable=None if progress else True)
-        with bar:
-            for row in _graded_rows(todo, exercises, ids, seed, limits, out, not allow_unconfined, jobs):
-                new_rows.append(row)
-                rows[row.submission] = row.as_csv(exercise_ids)
-                atomic_write(gradebook, _gradebook_text(header, rows))
-                bar.update()
-        if not todo:
-            atomic_write(gradebook, _gradebook_text(header, rows))
+        with exclusive(out):
+            records = load_records(out)
+            todo = [
+                t for t in tasks
+                if force or records.get((t["submission"], t["chapter"]), {}).get("sha256") != t["sha256"]
+                or not t["sha256"]
+            ]
+            new: list[dict] = []
+            atomic_write(out / UNASSIGNED, unassigned_text(unassigned))
+            bar = tqdm(total=len(todo), desc="grading", unit="notebook", disable=None if progress else True)
+            with bar:
+                for record in _graded(todo, suites, seed, limits, out, not allow_unconfined, jobs):
+                    write_record(out, record)
+                    records[(record["submission"], record["chapter"])] = record
+                    new.append(record)
+                    mine = [r for (s, _), r in records.items() if s == record["submission"]]
+                    write_student_pages(out, record["submission"], mine)
+                    atomic_write(out / GRADEBOOK, gradebook_text(records, course))
+                    bar.set_postfix_str(f"{record['student']} ch{record['chapter']:02d}", refresh=False)
+                    bar.update()
+            atomic_write(out / GRADEBOOK, gradebook_text(records, course))
+            written = ""
+            if report:
+                from .class_report import write_report
+
+                try:
+                    written = str(write_report(out, course))
+                except Exception as err:  # noqa: BLE001 - the grades are written; the report is told apart
+                    written = f"(the class report could not be written: {err})"
     finally:
         runner.shutdown()
-    summary = _summary(new_rows, len(submissions) - len(todo), sum(p for _, p in exercises.values()), started)
+    summary = _summary(new, len(tasks) - len(todo), started)
+    summary.unassigned, summary.other_chapters, summary.report = unassigned, other, written
     summary.confinement = probe.sandbox
     if not probe.confined:
         summary.unconfined = _unconfined_text(probe, allowed=True)
-    elif any(row.confined is False for row in new_rows):
+    elif any(r["confined"] is False for r in new):
         fate = "ran unconfined" if allow_unconfined else "were not graded"
         summary.unconfined = f"some submissions could not be confined and {fate}; see the confinement column"
     return summary
 
 
-def _chapter_ids(course, chapters: list[int] | None) -> list[str] | None:
-    if not chapters:
-        return None
-    known = {c.number for c in course.chapters}
-    unknown = sorted(set(chapters) - known)
-    if unknown:
-        raise ValueError(f"no chapter {unknown} in book.toml (chapters: {sorted(known)})")
-    return [eid for c in course.chapters if c.number in chapters for eid in c.exercise_points]
-
-
-def _summary(rows: list[GradeRow], skipped: int, max_score: float, started: float) -> ClassSummary:
-    failed = sum(1 for r in rows if r.status != "ok")
-    mean = sum(r.score for r in rows) / len(rows) if rows else 0.0
+def _summary(records: list[dict], skipped: int, started: float) -> ClassSummary:
+    failed = sum(1 for r in records if r["status"] != "ok")
+    by_chapter: dict[int, list[dict]] = {}
+    for record in records:
+        by_chapter.setdefault(record["chapter"], []).append(record)
+    chapters = {
+        ch: (len(rs), sum(float(r["score"]) for r in rs) / len(rs), max(float(r["max_score"]) for r in rs))
+        for ch, rs in by_chapter.items()
+    }
+    mean = sum(float(r["score"]) for r in records) / len(records) if records else 0.0
+    top = max((float(r["max_score"]) for r in records), default=0.0)
     totals: dict[str, float] = {}
-    for row in rows:
-        for exercise_id, seconds in (row.seconds or {}).items():
-            totals[exercise_id] = totals.get(exercise_id, 0.0) + seconds
+    for record in records:
+        for exercise_id, result in record["exercises"].items():
+            totals[exercise_id] = totals.get(exercise_id, 0.0) + result["seconds"]
     slowest = max(totals, key=totals.get, default="")
-    label = f"{slowest} ({totals[slowest] / len(rows):.2f} s per submission)" if slowest else ""
-    return ClassSummary(len(rows), skipped, failed, mean, max_score, label, time.monotonic() - started)
+    count = sum(1 for r in records if slowest in r["exercises"]) if slowest else 0
+    label = f"{slowest} ({totals[slowest] / count:.2f} s per submission)" if slowest else ""
+    seconds = time.monotonic() - started
+    return ClassSummary(len(records), skipped, failed, mean, top, label, seconds, by_chapter=chapters)
