@@ -6,7 +6,7 @@ import numpy as np
 
 from cagd_course.examples import notes_example
 from cagd_course.grading.suite import Case, Exercise, close, exact
-from cagd_ref import surfaces
+from cagd_ref import surfaces, tsplines
 
 # --- tensor-product patches, normals, corner curvatures, tessellation -------------------------------------
 #
@@ -294,7 +294,204 @@ SURFACE_EXERCISES = [
 ]
 
 # --- T-splines ---------------------------------------------------------------------------------------------
+#
+# Fixed cases: the notes' numerical example (Fig. 15.17, all 28 control points, the blending functions at
+# (3, 4)), the Rule-1 examples of Fig. 15.15 and the mesh of Fig. 15.20 before and after local refinement
+# (the same surface). The meshes are the plain dicts of the statement, built by `tsplines.tmesh`. Random
+# cases are grids with integer knot intervals from which interior vertices were taken out, each leaving a
+# gap in its row or in its column (two T-junctions), with a unit or a random frame.
 
-TSPLINE_EXERCISES = []
+T_EXAMPLE = "notes examples"
+T_COURSE = "course examples"
+T_JUNCTIONS = "T-junctions on the ray"
+T_FRAME = "frame knots"
+T_RATIONAL = "rational"
+T_SHAPES = "scalar vs array parameters"
+T_DOMAIN = "domain boundary"
+T_RANDOM = "random"
+T_BAD = "bad input"
+
+TMESH = notes_example("15.tmesh")
+RULE1 = notes_example("15.rule1")
+REFINEMENT = notes_example("15.refinement")
+
+
+def _plain_mesh(mesh) -> dict:
+    """A T-mesh dict of plain lists (integer edges), as a student builds it."""
+    plain = {"vertices": np.asarray(mesh["vertices"], dtype=float).tolist(),
+             "edges": np.asarray(mesh["edges"]).astype(int).tolist()}
+    if mesh.get("frame") is not None:
+        plain["frame"] = np.asarray(mesh["frame"], dtype=float).tolist()
+    return plain
+
+
+E2_MESH = _plain_mesh(TMESH.inputs["mesh"])
+E2_POINTS = np.column_stack([TMESH.inputs["mesh"]["vertices"], TMESH.inputs["heights"]]).tolist()
+E3_MESH = _plain_mesh(RULE1.inputs["mesh"])
+E4_MESH = _plain_mesh(REFINEMENT.inputs["mesh"])
+E4_POINTS = [[s, t, (s - 3.0) * (t - 4.0) / 8.0] for s, t in E4_MESH["vertices"]]
+E2_UNFRAMED = {"vertices": E2_MESH["vertices"], "edges": E2_MESH["edges"]}
+E2_FRAMED = dict(E2_MESH, frame=[[-3.0, -0.5, 8.5, 12.0], [-1.5, -1.0, 7.25, 9.0]])
+
+
+def _refined_e4():
+    mesh, points, weights, _ = tsplines.local_refinement(
+        E4_MESH, E4_POINTS, REFINEMENT.inputs["new_vertices"], REFINEMENT.inputs["new_edges"].astype(int))
+    return _plain_mesh(mesh), points.tolist(), weights.tolist()
+
+
+def _random_tmesh(rng, framed=None):
+    """A grid with integer knot intervals, some interior vertices removed (each opens its row or its column)."""
+    count_s, count_t = (int(v) for v in rng.integers(4, 8, 2))
+    s_lines = np.cumsum(np.r_[0, rng.integers(1, 4, count_s - 1)]).astype(float)
+    t_lines = np.cumsum(np.r_[0, rng.integers(1, 4, count_t - 1)]).astype(float)
+    gaps = {}
+    for i in range(1, count_s - 1):
+        for j in range(1, count_t - 1):
+            if rng.uniform() < 0.3:
+                gaps[(s_lines[i], t_lines[j])] = "row" if rng.uniform() < 0.5 else "column"
+    vertices = [(s, t) for t in t_lines for s in s_lines if (s, t) not in gaps]
+    index = {v: k for k, v in enumerate(vertices)}
+    edges = []
+    for axis, lines, others in ((1, t_lines, s_lines), (0, s_lines, t_lines)):
+        kind = "row" if axis == 1 else "column"
+        for value in lines:
+            on_line = [(o, value) if axis == 1 else (value, o) for o in others]
+            present = [p for p in on_line if p in index]
+            for a, b in zip(present[:-1], present[1:]):
+                between = [p for p in on_line if p in gaps and a[1 - axis] < p[1 - axis] < b[1 - axis]]
+                if not any(gaps[p] == kind for p in between):
+                    edges.append([index[a], index[b]])
+    frame = None
+    use_frame = rng.uniform() < 0.5 if framed is None else framed
+    if use_frame:
+        frame = [[s_lines[0] - 2.5, s_lines[0] - 0.5, s_lines[-1] + 1.5, s_lines[-1] + 4.0],
+                 [t_lines[0] - 1.5, t_lines[0] - 0.25, t_lines[-1] + 0.5, t_lines[-1] + 3.0]]
+    return _plain_mesh(tsplines.tmesh(vertices, edges, frame))
+
+
+# Rules: sentences of the statements of exercises 15.infer_knot_vectors and 15.tspline_point, word for word.
+MESH_RULE = ("Raise a ValueError (or a TypeError) if mesh is not a dict with the keys \"vertices\" and \"edges\" "
+             "(and optionally \"frame\"), if vertices is not of shape (V, 2), or if an edge joins two vertices that "
+             "share neither s nor t.")
+INFER_RULES = {
+    T_JUNCTIONS: "An edge that merely ends on the ray (a T-junction lying on it) is met.",
+    T_FRAME: "A ray that leaves the mesh takes the frame knots of that side.",
+    T_BAD: MESH_RULE + " Raise a ValueError if vertex is not an index 0 <= vertex < V (a TypeError if it is not "
+    "an integer).",
+}
+POINT_RULES = {
+    T_RATIONAL: "The weight multiplies once: H_i = w_i (P_i, 1) in the numerator and w_i in the denominator.",
+    T_SHAPES: "Two numbers give an array of shape (d,); k pairs give an array of shape (k, d).",
+    T_DOMAIN: "The domain is the box of the vertices, its boundary included.",
+    T_BAD: "Raise a ValueError if points does not have one row per vertex, if weights is not None and not V "
+    "nonzero numbers, if s and t do not broadcast, or if a pair (s, t) lies outside the domain.",
+}
+
+
+# --- 15.infer_knot_vectors --------------------------------------------------------------------------------
+
+
+def infer_knot_vectors_cases(rng):
+    refined, _, _ = _refined_e4()
+    cases = [Case(T_EXAMPLE, (E2_MESH, i), visible=i in (10, 15, 0, 27)) for i in range(28)]
+    cases += [Case(T_EXAMPLE, (E3_MESH, int(v)), visible=True) for v in RULE1.inputs["vertices"]]
+    cases += [Case(T_COURSE, (E4_MESH, i)) for i in range(0, 37, 3)]
+    cases += [Case(T_COURSE, (refined, i)) for i in (37, 38, 9, 16, 22, 26)]
+    cases += [
+        Case(T_JUNCTIONS, (E2_MESH, 10), visible=True),  # P10: no vertex to its left on t = 3, yet s = 1 and 0
+        Case(T_JUNCTIONS, (E2_MESH, 2)),  # P2 = (7, 0): up, the rows t = 1 and t = 3
+        Case(T_JUNCTIONS, (E2_MESH, 21)),  # (4, 6): the column s = 4 ends at (4, 5)
+        Case(T_JUNCTIONS, (E2_MESH, 13)),
+        Case(T_JUNCTIONS, (E3_MESH, 33)),  # (10, 4): the row t = 5 starts at s = 10
+        Case(T_FRAME, (E2_FRAMED, 0), visible=True),
+        Case(T_FRAME, (E2_FRAMED, 27)),
+        Case(T_FRAME, (E2_FRAMED, 9)),
+        Case(T_FRAME, (E2_UNFRAMED, 3), visible=True),  # no frame: unit intervals beyond the mesh
+        Case(T_FRAME, ({"vertices": [[0.0, 0.0]], "edges": []}, 0), visible=True),  # one vertex: only the frame
+        Case(T_FRAME, ({"vertices": [[0.0, 0.0], [2.0, 0.0]], "edges": [[0, 1]],
+                        "frame": [[-1.0, -0.5, 3.0, 5.0], [-2.0, -1.0, 1.0, 4.0]]}, 1)),
+    ]
+    for _ in range(12):
+        mesh = _random_tmesh(rng)
+        for vertex in rng.choice(len(mesh["vertices"]), 3, replace=False):
+            cases.append(Case(T_RANDOM, (mesh, int(vertex))))
+    cases += [
+        Case(T_BAD, ([[0.0, 0.0]], 0)),  # not a dict
+        Case(T_BAD, ({"vertices": [[0.0, 0.0], [1.0, 0.0]]}, 0)),  # no edges
+        Case(T_BAD, ({"vertices": [[0.0, 0.0, 0.0]], "edges": []}, 0)),
+        Case(T_BAD, ({"vertices": [[0.0, 0.0], [1.0, 1.0]], "edges": [[0, 1]]}, 0)),  # a slanted edge
+        Case(T_BAD, (E2_MESH, 28)),
+        Case(T_BAD, (E2_MESH, -1)),
+        Case(T_BAD, (E2_MESH, 2.5)),
+    ]
+    return cases
+
+
+# --- 15.tspline_point -------------------------------------------------------------------------------------
+
+
+def tspline_point_cases(rng):
+    refined, refined_points, refined_weights = _refined_e4()
+    s_grid, t_grid = (a.ravel().tolist() for a in np.meshgrid(np.linspace(0.5, 7.5, 6), np.linspace(0.5, 6.5, 5)))
+    e2_weights = np.random.default_rng(154).uniform(0.5, 2.0, 28).tolist()
+    e4_s, e4_t = (a.ravel().tolist() for a in np.meshgrid(np.linspace(0, 8, 7), np.linspace(0.5, 7.5, 6)))
+    cases = [
+        Case(T_EXAMPLE, (E2_MESH, E2_POINTS, 3.0, 4.0), visible=True),
+        Case(T_EXAMPLE, (E2_MESH, E2_POINTS, s_grid, t_grid), visible=True),
+        Case(T_EXAMPLE, (E2_FRAMED, E2_POINTS, [3.0, 1.5, 6.0], [4.0, 2.0, 5.5])),
+        Case(T_COURSE, (E4_MESH, E4_POINTS, e4_s, e4_t), visible=True),
+        Case(T_COURSE, (refined, refined_points, e4_s, e4_t, refined_weights), visible=True),  # the same surface
+        Case(T_RATIONAL, (E2_MESH, E2_POINTS, 3.0, 4.0, e2_weights), visible=True),
+        Case(T_RATIONAL, (E2_MESH, E2_POINTS, s_grid, t_grid, e2_weights)),
+        Case(T_RATIONAL, (E2_MESH, E2_POINTS, [2.0, 6.0], [2.0, 6.0], [1.0, -0.25] * 14)),  # negative weights
+        Case(T_SHAPES, (E2_MESH, E2_POINTS, [3.0], [4.0])),
+        Case(T_SHAPES, (E2_MESH, E2_POINTS, [1.0, 3.0, 5.0], 4.0), visible=True),
+        Case(T_SHAPES, (E2_MESH, [p[:2] for p in E2_POINTS], 2.5, [1.0, 3.5])),  # d = 2
+        Case(T_SHAPES, (E2_MESH, [[p[2]] for p in E2_POINTS], 3.0, 4.0)),  # d = 1
+        Case(T_DOMAIN, (E2_MESH, E2_POINTS, [0.0, 8.0, 0.0, 8.0, 4.0], [0.0, 0.0, 7.0, 7.0, 7.0]), visible=True),
+        Case(T_DOMAIN, (E4_MESH, E4_POINTS, [0.0, 8.0, 4.0], [4.0, 8.0, 0.0])),
+    ]
+    for _ in range(12):
+        mesh = _random_tmesh(rng)
+        (s_min, t_min), (s_max, t_max) = np.min(mesh["vertices"], axis=0), np.max(mesh["vertices"], axis=0)
+        count = len(mesh["vertices"])
+        k = int(rng.integers(1, 8))
+        points = rng.uniform(-2, 2, (count, 3)).tolist()
+        s, t = rng.uniform(s_min, s_max, k).tolist(), rng.uniform(t_min, t_max, k).tolist()
+        weights = rng.uniform(0.4, 2.5, count).tolist() if rng.uniform() < 0.6 else None
+        cases.append(Case(T_RANDOM, (mesh, points, s, t) + ((weights,) if weights else ())))
+    cases += [
+        Case(T_BAD, (E2_MESH, E2_POINTS[:27], 3.0, 4.0)),
+        Case(T_BAD, (E2_MESH, E2_POINTS, 3.0, 4.0, [1.0] * 27)),
+        Case(T_BAD, (E2_MESH, E2_POINTS, 3.0, 4.0, [0.0] + [1.0] * 27)),
+        Case(T_BAD, (E2_MESH, E2_POINTS, [1.0, 2.0], [1.0, 2.0, 3.0])),
+        Case(T_BAD, (E2_MESH, E2_POINTS, 8.5, 4.0)),  # beyond s_max = 8
+        Case(T_BAD, (E2_MESH, E2_POINTS, [3.0, 3.0], [4.0, -0.1])),
+    ]
+    return cases
+
+
+TSPLINE_EXERCISES = [
+    Exercise(
+        id="15.infer_knot_vectors",
+        reference=tsplines.infer_knot_vectors,
+        cases=infer_knot_vectors_cases,
+        compare=close(1e-12, 1e-12),
+        hint="Going right from (s_i, t_i), collect the s values of the vertical edges whose closed t-range contains "
+        "t_i and whose s is greater than s_i, sorted; append the two frame knots; take the first two. Likewise left "
+        "(then reverse), up and down with the horizontal edges.",
+        rules=INFER_RULES,
+    ),
+    Exercise(
+        id="15.tspline_point",
+        reference=tsplines.tspline_point,
+        cases=tspline_point_cases,
+        compare=close(1e-9, 1e-9),
+        hint="Every control point has its own knot vectors (your infer_knot_vectors); B_i = N[s_i](s) N[t_i](t). "
+        "Sum w_i P_i B_i and w_i B_i separately and divide: the B_i do not sum to 1 on a T-mesh.",
+        rules=POINT_RULES,
+    ),
+]
 
 EXERCISES = SURFACE_EXERCISES + TSPLINE_EXERCISES
