@@ -34,14 +34,14 @@ Part III. Interpolation and approximation
 Part IV. Deformations and surfaces
 
     ffd                   14       free-form deformation: a tensor-product lattice bends whatever lies in its box
-    surfaces              15, 16   tensor-product Bézier and NURBS patches: points, normals, curvature, tessellation; O(n²)
+    surfaces              15, 16   Bézier and NURBS patches: points, normals, curvature, tessellation, the O(n²) method
     tsplines              15       T-meshes, knot inference and T-spline surfaces, local refinement
 
 Part V. Algebraic geometry
 
     algebra               17       resultants, GCDs, implicitization, inversion and intersection of rational curves
     moving_lines          18       moving lines and pencils: conics, double points, compact implicit equations
-    plane_curves          19       genus, double points, discriminants, intersections of implicit curves, parametrization
+    plane_curves          19       genus, double points, discriminants, implicit curves' intersections, parametrization
 
 Part VI. Hybrid curves, integrals and maps of quadrilaterals
 
