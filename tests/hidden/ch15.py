@@ -394,10 +394,11 @@ POINT_RULES = {
 
 def infer_knot_vectors_cases(rng):
     refined, _, _ = _refined_e4()
-    cases = [Case(T_EXAMPLE, (E2_MESH, i), visible=i in (10, 15, 0, 27)) for i in range(28)]
+    # Ten of the 28 vertices of Fig. 15.17: the four the notes evaluate, corners, T-junctions and the middle.
+    cases = [Case(T_EXAMPLE, (E2_MESH, i), visible=i in (10, 15, 0, 27)) for i in (0, 2, 4, 6, 10, 13, 15, 20, 24, 27)]
     cases += [Case(T_EXAMPLE, (E3_MESH, int(v)), visible=True) for v in RULE1.inputs["vertices"]]
-    cases += [Case(T_COURSE, (E4_MESH, i)) for i in range(0, 37, 3)]
-    cases += [Case(T_COURSE, (refined, i)) for i in (37, 38, 9, 16, 22, 26)]
+    cases += [Case(T_COURSE, (E4_MESH, i)) for i in range(0, 37, 6)]
+    cases += [Case(T_COURSE, (refined, i)) for i in (37, 38, 16)]
     cases += [
         Case(T_JUNCTIONS, (E2_MESH, 10), visible=True),  # P10: no vertex to its left on t = 3, yet s = 1 and 0
         Case(T_JUNCTIONS, (E2_MESH, 2)),  # P2 = (7, 0): up, the rows t = 1 and t = 3
@@ -412,9 +413,9 @@ def infer_knot_vectors_cases(rng):
         Case(T_FRAME, ({"vertices": [[0.0, 0.0], [2.0, 0.0]], "edges": [[0, 1]],
                         "frame": [[-1.0, -0.5, 3.0, 5.0], [-2.0, -1.0, 1.0, 4.0]]}, 1)),
     ]
-    for _ in range(12):
+    for _ in range(6):
         mesh = _random_tmesh(rng)
-        for vertex in rng.choice(len(mesh["vertices"]), 3, replace=False):
+        for vertex in rng.choice(len(mesh["vertices"]), 2, replace=False):
             cases.append(Case(T_RANDOM, (mesh, int(vertex))))
     cases += [
         Case(T_BAD, ([[0.0, 0.0]], 0)),  # not a dict
