@@ -15,12 +15,14 @@ coefficient arrays f[i, j] of x^i y^j (the layout of chapter 17).
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
+from math import comb
 
 import numpy as np
 
 from ._validation import as_count, as_float_array, as_line, as_points, as_scalar, as_vector, as_weights
-from .bezier import evaluate, hodograph, subdivide, to_homogeneous
+from .bezier import elevate, evaluate, hodograph, subdivide, to_homogeneous
 from .geometry import join, normalize_line
 from .interpolation import second_derivative_bounds
 from .polynomials import bernstein_horner, bernstein_multiply, bernstein_to_power
@@ -1063,13 +1065,19 @@ class _Search:
 def _curve_pair(p, q, p_weights, q_weights):
     """Checked planar curves (degree >= 1) and their homogeneous forms; weights must be positive."""
     pts_p, pts_q = _two_curves(p, q)
-    hp = _homogeneous_columns(pts_p, p_weights, "p", "p_weights")
-    hq = _homogeneous_columns(pts_q, q_weights, "q", "q_weights")
-    for name, h in (("p_weights", hp), ("q_weights", hq)):
-        if np.any(h[:, 2] <= 0):
-            raise ValueError(f"{name}: Bézier clipping needs positive weights (the convex hull property), "
-                             f"got {h[:, 2].tolist()}")
-    return pts_p, pts_q, hp, hq
+    homogeneous = []
+    for pts, weights, name in ((pts_p, p_weights, "p_weights"), (pts_q, q_weights, "q_weights")):
+        if weights is None:
+            h = np.ones((len(pts), 3))
+            h[:, :2] = pts
+        else:
+            w = as_weights(weights, len(pts), name)
+            if np.any(w <= 0):
+                raise ValueError(f"{name}: Bézier clipping needs positive weights (the convex hull property), "
+                                 f"got {w.tolist()}")
+            h = to_homogeneous(pts, w)
+        homogeneous.append(h)
+    return pts_p, pts_q, *homogeneous
 
 
 def intersect_curves(p, q, tol: float = 1e-9, p_weights=None, q_weights=None, max_steps: int = MAX_STEPS,
@@ -1077,11 +1085,13 @@ def intersect_curves(p, q, tol: float = 1e-9, p_weights=None, q_weights=None, ma
     """Every intersection (t, u) of two planar Bézier curves by Bézier clipping: (k, 2), sorted by t, u. Notes §7.7.
 
     p: (n+1, 2), q: (m+1, 2), degrees >= 1; p_weights, q_weights: None
-    (polynomial) or positive weights of a rational curve. Each round clips P
-    against the fat line of Q, then Q against the fat line of the clipped P
-    (with perpendicular=True also against the perpendicular fat lines, and
-    the ranges intersected); a round that removes less than 20 % of both
-    ranges splits the curve with the longer parameter range in two (§7.7.5).
+    (polynomial) or positive weights of a rational curve. Each round clips
+    every live pair of pieces at once, in NumPy arrays: P against the fat
+    line of Q and Q against the fat line of P (with perpendicular=True also
+    against the perpendicular fat lines, and the ranges intersected); a round
+    that removes less than 20 % of both ranges splits the curve with the
+    longer parameter range in two (§7.7.5). (`clip_trace` shows the same
+    search one pair and one clip at a time, Q clipped against the clipped P.)
     A pair whose ranges are both narrower than tol is an intersection. Found
     pieces that touch (an intersection on a split point, or the many pieces
     of a tangential intersection) are reported once; shared end points come
@@ -1100,9 +1110,8 @@ def intersect_curves(p, q, tol: float = 1e-9, p_weights=None, q_weights=None, ma
     pts_p, pts_q, hp, hq = _curve_pair(p, q, p_weights, q_weights)
     tol = _tolerance(tol)
     max_steps = as_count(max_steps, "max_steps", minimum=1)
-    rational = (p_weights is not None, q_weights is not None)
-    search = _Search(hp, hq, rational, tol, max_steps, perpendicular)
-    boxes = search.run(lambda: _raise_if_overlapping(hp, hq))
+    boxes = _batched_search(hp, hq, tol, max_steps, perpendicular, lambda: _raise_if_overlapping(hp, hq),
+                            _scale(pts_p, pts_q))
     return _merge_boxes(boxes, tol, pts_p, pts_q, p_weights, q_weights)
 
 
@@ -1159,6 +1168,209 @@ def search_steps(p, q, method: str = "clipping", tol: float = 1e-9) -> list[Sear
     return steps
 
 
+# --- the batched search of intersect_curves: every live pair of pieces clipped at once ----------------
+#
+# The plain search above takes one pair of pieces at a time and one NumPy step per clip, which is
+# what the chapter shows and `clip_trace` records. `intersect_curves` runs the same clipping on all
+# live pairs of pieces together: the state is only the parameter ranges, (2, K) arrays lo and hi
+# (row 0 for P, row 1 for Q, one column per pair of pieces); each round rebuilds every piece from
+# the original curve, takes every fat line, clips every piece against its partner's and splits the
+# stalled pairs, each as a few operations on whole arrays. Both curves of a pair are clipped against
+# the fat lines of the other piece as it was at the start of the round (the plain search clips Q
+# against the already clipped P), so that both halves of a round are one computation.
+
+
+@functools.cache
+def _batch_tables(n: int):
+    """Constant tables for degree n: the blossom terms of a piece and the point pairs of a hull clip.
+
+    Piece: the control points of the part [a, b] of a curve are its blossom values
+    f(a^(n-i), b^i) = Σ_j M_ij P_j with M_ij = Σ_k B_k^i(b) B_(j-k)^(n-i)(a) (§6: the blossom is
+    symmetric and affine in each argument), a sum of products b^k (1-b)^(i-k) a^(j-k) (1-a)^(n-i-j+k)
+    with positive coefficients C(i, k) C(n-i, j-k): term r is entry high[r] of the table
+    b^x (1-b)^y times entry low[r] of the table a^x (1-a)^y (x, y = 0..n, flattened), added into
+    M[i_r, j_r] with coefficient coefs[r]. Hull clip: for the explicit points (i/n, s_i), pairs[0]
+    gathers s_i and pairs[1] forms s_i - s_j over all i < j (a matrix on the points' axis), the
+    crossing of segment i j with s = 0 is t_i + (t_j - t_i) s_i / (s_i - s_j).
+    """
+    terms = [(i, j, k) for i in range(n + 1) for j in range(n + 1) for k in range(max(0, i + j - n), min(i, j) + 1)]
+    i, j, k = np.array(terms).T
+    high = k * (n + 1) + (i - k)
+    low = (j - k) * (n + 1) + (n - i - j + k)
+    coefs = np.array([comb(a, c) * comb(n - a, b - c) for a, b, c in terms], dtype=float)
+    first, second = np.triu_indices(n + 1, 1)
+    count = len(first)
+    gather = np.zeros((2 * count, n + 1))
+    gather[np.arange(count), first] = 1.0
+    gather[count + np.arange(count), first] = 1.0
+    gather[count + np.arange(count), second] = -1.0
+    t = np.arange(n + 1) / n
+    return high, low, (i, j, coefs), gather, t[first][:, None], (t[second] - t[first])[:, None]
+
+
+def _batch_curves(hp: np.ndarray, hq: np.ndarray) -> tuple[np.ndarray, int, np.ndarray]:
+    """Both homogeneous curves at one degree n (the lower one elevated), folded into the blossom terms.
+
+    Returns (folded (2, T, 3(n+1)), n, curves (2, n+1, 3)).
+    """
+    n = max(len(hp), len(hq)) - 1
+    if len(hp) != len(hq):
+        hp, hq = elevate(hp, n + 1 - len(hp)), elevate(hq, n + 1 - len(hq))
+    curves = np.stack([hp, hq])
+    i, j, coefs = _batch_tables(n)[2]
+    folded = np.zeros((2, len(coefs), n + 1, 3))
+    folded[:, np.arange(len(coefs)), i] = coefs[:, None] * curves[:, j]
+    return folded.reshape(2, len(coefs), -1), n, curves
+
+
+def _batch_pieces(lo: np.ndarray, hi: np.ndarray, folded: np.ndarray, n: int) -> np.ndarray:
+    """Homogeneous control points (2, K, n+1, 3) of the pieces over [lo, hi] (each (2, K)) of both curves."""
+    high, low = _batch_tables(n)[:2]
+    k = lo.shape[1]
+    powers = np.empty((4, 2, k, n + 1))  # b^x, (1-b)^x, a^x, (1-a)^x for x = 0..n
+    powers[..., 0] = 1.0
+    powers[..., 1:] = np.concatenate([hi, 1 - hi, lo, 1 - lo]).reshape(4, 2, k, 1)
+    np.cumprod(powers, axis=-1, out=powers)
+    b_table = (powers[0, ..., :, None] * powers[1, ..., None, :]).reshape(2, k, -1)
+    a_table = (powers[2, ..., :, None] * powers[3, ..., None, :]).reshape(2, k, -1)
+    products = np.take(b_table, high, axis=2) * np.take(a_table, low, axis=2)
+    return (products @ folded).reshape(2, k, n + 1, 3)
+
+
+_NORMAL_AND_CHORD = np.array([[0.0, 1.0, 1.0, 0.0], [-1.0, 0.0, 0.0, 1.0]])  # (dx, dy) -> columns (-dy, dx), (dx, dy)
+_NORMAL = np.array([[0.0, 1.0], [-1.0, 0.0]])
+
+
+def _batch_fat_lines(h: np.ndarray, pad: float, perpendicular: bool) -> tuple[np.ndarray, np.ndarray]:
+    """Every piece's padded fat line(s) as one-sided conditions, and the unpadded width of the parallel band.
+
+    h: (..., n+1, 3). Returns (A, width): A (..., 3, 2L) with L = 2 lines (parallel and
+    perpendicular) or 1; the curve of the piece lies where x · A[:, c] >= 0 for every column c and
+    homogeneous point x (lower and upper side of each band, as `_bands` pads them). The chord of a
+    closed or tiny piece is replaced as in `_bands`.
+    """
+    points = h[..., :2] / h[..., 2:]
+    start = points[..., 0, :]
+    chord = points[..., -1, :] - start
+    length = np.hypot(chord[..., 0], chord[..., 1])
+    short = length <= pad
+    if np.count_nonzero(short):
+        offsets = points - start[..., None, :]
+        distances = np.hypot(offsets[..., 0], offsets[..., 1])
+        far = np.take_along_axis(offsets, distances.argmax(axis=-1)[..., None, None], axis=-2)[..., 0, :]
+        far = np.where((distances.max(axis=-1) > pad)[..., None], far, [1.0, 0.0])
+        chord = np.where(short[..., None], far, chord)
+        length = np.hypot(chord[..., 0], chord[..., 1])
+    lines = 2 if perpendicular else 1
+    turn = _NORMAL_AND_CHORD if perpendicular else _NORMAL
+    normals = ((chord / length[..., None]) @ turn).reshape(*length.shape, 2, lines)
+    values = points @ normals  # (..., n+1, L): a x + b y of every control point
+    low = np.minimum.reduce(values, axis=-2)
+    high = np.maximum.reduce(values, axis=-2)
+    sides = np.empty(length.shape + (3, 2 * lines))
+    sides[..., :2, :lines] = normals
+    np.negative(normals, out=sides[..., :2, lines:])
+    np.subtract(pad, low, out=sides[..., 2, :lines])  # a x + b y - (low - pad) >= 0
+    np.add(high, pad, out=sides[..., 2, lines:])  # (high + pad) - (a x + b y) >= 0
+    return sides, high[..., 0] - low[..., 0]
+
+
+def _batch_kept(s: np.ndarray, n: int) -> tuple[np.ndarray, np.ndarray]:
+    """Local ranges (lo, hi) where every explicit curve (i/n, s[..., i, c]) may be >= 0; NaN or lo > hi if none.
+
+    s: (..., n+1, B), one column per one-sided condition. Each range is `_hull_band(s, 0, inf)`
+    computed for all pieces and conditions at once (crossings of all point pairs with s = 0, an end
+    point that satisfies its condition is in), then the B ranges are intersected (the hull meets a
+    band exactly where it meets both of its half-planes: the hull's vertical sections are segments).
+    """
+    gather, t_first, t_step = _batch_tables(n)[3:]
+    count = len(t_first)
+    g = gather @ s
+    r = g[..., :count, :] / g[..., count:, :]  # where segment i j crosses s = 0, as a fraction of it
+    crossing = np.where((r >= 0) & (r <= 1), t_first + t_step * r, np.nan)  # NaN: the segment does not cross
+    lo = np.where(s[..., 0, :] >= 0, 0.0, np.fmin.reduce(crossing, axis=-2))  # fmin, fmax skip NaN
+    hi = np.where(s[..., -1, :] >= 0, 1.0, np.fmax.reduce(crossing, axis=-2))
+    return np.maximum.reduce(lo, axis=-1), np.minimum.reduce(hi, axis=-1)  # NaN (nothing kept) stays NaN
+
+
+def _batched_search(hp, hq, tol, max_steps, perpendicular=True, overlap_check=None, scale=None) -> np.ndarray:
+    """The boxes (k, 4) = (t_lo, t_hi, u_lo, u_hi) found by Bézier clipping all live pairs of pieces at once."""
+    folded, n, curves = _batch_curves(hp, hq)
+    scale = _scale(hp[:, :2] / hp[:, 2:], hq[:, :2] / hq[:, 2:]) if scale is None else scale
+    pad = PAD * scale
+    lo, hi = np.zeros((2, 1)), np.ones((2, 1))
+    boxes, steps, checked = [], 0, overlap_check is None
+    with np.errstate(divide="ignore", invalid="ignore"):  # crossings of segments parallel to s = 0
+        while lo.shape[1]:
+            steps += lo.shape[1]
+            if not checked and steps >= OVERLAP_CHECK_AFTER:
+                checked = True
+                overlap_check()
+            if steps > max_steps:
+                raise RuntimeError(
+                    f"intersect_curves: gave up after {max_steps} clipping rounds, still working near "
+                    f"t = {lo[0, 0]:.9g}, u = {lo[1, 0]:.9g}; the curves may touch there to high order or overlap a "
+                    "little (raise max_steps or tol)"
+                )
+            width = hi - lo
+            narrow = width <= tol
+            if np.count_nonzero(narrow):
+                done = narrow[0] & narrow[1]
+                if np.count_nonzero(done):
+                    boxes.append(np.concatenate([lo[:, done], hi[:, done]]))
+                    live = ~done
+                    lo, hi, width, narrow = lo[:, live], hi[:, live], width[:, live], narrow[:, live]
+                    if not lo.shape[1]:
+                        break
+            pieces = _batch_pieces(lo, hi, folded, n) if steps > 1 else curves[:, None]  # first: the whole curves
+            sides = _batch_fat_lines(pieces, pad, perpendicular)[0]
+            a, b = _batch_kept(pieces @ sides[::-1], n)  # each curve against the other's fat lines
+            if np.count_nonzero(narrow):  # a converged piece is kept while the other one still needs clipping
+                frozen = narrow & ~narrow[::-1]
+                a, b = np.where(frozen, 0.0, a), np.where(frozen, 1.0, b)
+            kept = a <= b
+            alive = kept[0] & kept[1]
+            a = np.maximum(a - SLACK, 0.0)
+            b = np.minimum(b + SLACK, 1.0)
+            new_lo = lo + width * a
+            new_hi = hi - width * (1.0 - b)  # exactly hi when nothing is clipped at that end
+            if np.count_nonzero(alive) < alive.size:
+                new_lo, new_hi, width = new_lo[:, alive], new_hi[:, alive], width[:, alive]
+            lo, hi = new_lo, new_hi
+            wide = hi - lo > STALL * width
+            stalled = wide[0] & wide[1]
+            if np.count_nonzero(stalled):
+                lo, hi = _batch_split(lo, hi, stalled, folded, n, scale, pad, boxes)
+    if not boxes:
+        return np.zeros((0, 4))
+    found = np.concatenate(boxes, axis=1)  # rows t_lo, u_lo, t_hi, u_hi
+    return found[[0, 2, 1, 3]].T
+
+
+def _batch_split(lo, hi, stalled, folded, n, scale, pad, boxes):
+    """Stalled pairs: a found box if both pieces are tiny and flat to rounding (a tangency), else halve the longer."""
+    rows = np.flatnonzero(stalled)
+    pieces = _batch_pieces(lo[:, rows], hi[:, rows], folded, n)
+    points = pieces[..., :2] / pieces[..., 2:]
+    tiny = np.all(np.ptp(points, axis=-2).max(axis=-1) <= TINY * scale, axis=0)
+    found = np.zeros(len(rows), dtype=bool)
+    if np.count_nonzero(tiny):
+        width = _batch_fat_lines(pieces[:, tiny], pad, False)[1] + 2 * pad  # the padded band, as `_bands`
+        found[np.flatnonzero(tiny)[np.all(width <= THIN * pad, axis=0)]] = True
+    if np.count_nonzero(found):
+        boxes.append(np.concatenate([lo[:, rows[found]], hi[:, rows[found]]]))
+    split = rows[~found]
+    longer = (hi[1, split] - lo[1, split] > hi[0, split] - lo[0, split]).astype(int)  # ties split P
+    columns = np.arange(len(split))
+    middle = (lo[longer, split] + hi[longer, split]) / 2
+    first_hi, second_lo = hi[:, split], lo[:, split]  # copies (fancy indexing)
+    first_hi[longer, columns] = middle
+    second_lo[longer, columns] = middle
+    keep = ~stalled
+    return (np.concatenate([lo[:, keep], lo[:, split], second_lo], axis=1),
+            np.concatenate([hi[:, keep], first_hi, hi[:, split]], axis=1))
+
+
 def _raise_if_overlapping(hp: np.ndarray, hq: np.ndarray, samples: int = 201, fine: int = 4001) -> None:
     """ValueError if a run of P's sample points covering 1 % of [0, 1] lies on Q (within what sampling can tell)."""
     ts = np.linspace(0.0, 1.0, samples)
@@ -1188,7 +1400,7 @@ def _polyline_distances(points: np.ndarray, polyline: np.ndarray) -> np.ndarray:
 
 def _merge_boxes(boxes, tol, p, q, p_weights, q_weights) -> np.ndarray:
     """One (t, u) per group of found boxes that touch (within tol), sorted; end parameters snapped when exact."""
-    if not boxes:
+    if not len(boxes):
         return np.zeros((0, 2))
     b = np.array(boxes, dtype=float)
     near_t = (b[:, None, 0] <= b[None, :, 1] + tol) & (b[None, :, 0] <= b[:, None, 1] + tol)

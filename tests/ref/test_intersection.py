@@ -6,7 +6,9 @@ circular points, a fat line holds its curve, a clip never cuts away a point of
 the curve that lies in the band, the V rule never clips more than the hull),
 and against independent peers: exact fractions for the clipping examples,
 SymPy resultants and the `bezier` package for the intersections, SciPy's
-linear programming for the hull of a clip.
+linear programming for the hull of a clip. The batched search that
+`intersect_curves` runs is checked against the plain one-pair-at-a-time
+stepper of `clip_trace`, piece by piece, clip by clip and result by result.
 """
 
 from __future__ import annotations
@@ -809,6 +811,91 @@ def test_results_are_sorted_and_within_tol():
     swapped = x.intersect_curves(*five.args("q", "p"))
     assert np.all(np.diff(swapped[:, 0]) > 0)
     np.testing.assert_allclose(swapped, exact[np.argsort(exact[:, 1])][:, ::-1], atol=1e-11)
+
+
+def _plain_intersections(p, q, tol=1e-9, p_weights=None, q_weights=None, perpendicular=True):
+    """The same search one pair of pieces and one clip at a time: the stepper `clip_trace` records."""
+    pts_p, pts_q, hp, hq = x._curve_pair(p, q, p_weights, q_weights)
+    search = x._Search(hp, hq, (p_weights is not None, q_weights is not None), tol, x.MAX_STEPS, perpendicular)
+    return x._merge_boxes(search.run(), tol, pts_p, pts_q, p_weights, q_weights)
+
+
+def test_the_batched_search_agrees_with_the_plain_stepper():
+    # intersect_curves clips all live pairs of pieces at once; the plain search takes them one by one.
+    rng = np.random.default_rng(91)
+    found = 0
+    for trial in range(60):
+        n, m = rng.integers(1, 7, 2)
+        p, q = rng.uniform(-1, 1, (n + 1, 2)), rng.uniform(-1, 1, (m + 1, 2))
+        weights = {}
+        if trial % 2:  # every other pair rational, one curve or both
+            weights["p_weights"] = rng.uniform(0.2, 3, n + 1)
+            if trial % 4 == 3:
+                weights["q_weights"] = rng.uniform(0.2, 3, m + 1)
+        perpendicular = trial % 3 != 0
+        batched = x.intersect_curves(p, q, perpendicular=perpendicular, **weights)
+        plain = _plain_intersections(p, q, perpendicular=perpendicular, **weights)
+        assert batched.shape == plain.shape, (trial, p.tolist(), q.tolist(), weights)
+        np.testing.assert_allclose(batched, plain, atol=1e-9)
+        for t, u in batched:
+            np.testing.assert_allclose(evaluate(p, t, weights.get("p_weights")),
+                                       evaluate(q, u, weights.get("q_weights")), atol=1e-7)
+        found += len(batched)
+    assert found >= 40
+    # The notes' examples, a tangency and shared end points come out of both alike.
+    for name in ("clip_curves", "five_intersections"):
+        ex = example(name)
+        np.testing.assert_allclose(x.intersect_curves(*ex.args("p", "q")), _plain_intersections(*ex.args("p", "q")),
+                                   atol=1e-11)
+    parabola, tangent = [(0.0, 1.0), (0.5, -1.0), (1.0, 1.0)], [(0.0, 0.0), (1.0, 0.0)]
+    np.testing.assert_allclose(x.intersect_curves(parabola, tangent), _plain_intersections(parabola, tangent),
+                               atol=1e-7)
+    cubic, joined = [(0.0, 0.0), (1.0, 2.0), (3.0, 2.0), (4.0, 0.0)], [(4.0, 0.0), (5.0, -2.0), (6.0, 1.0)]
+    assert x.intersect_curves(cubic, joined).tolist() == _plain_intersections(cubic, joined).tolist() == [[1.0, 0.0]]
+
+
+def test_batched_pieces_are_the_pieces_of_curve_piece():
+    rng = np.random.default_rng(92)
+    for n in (1, 3, 6):
+        h = rng.uniform(-2, 2, (n + 1, 3))
+        h[:, 2] = rng.uniform(0.5, 2, n + 1)
+        other = rng.uniform(-2, 2, (n + 1, 3))
+        lo = np.sort(rng.uniform(0, 1, (2, 2, 5)), axis=0)
+        lo[:, :, 0] = [[0.0, 0.0], [1.0, 1.0]]  # the whole curve
+        lo[:, :, 1] = [[0.3, 0.7], [0.3, 0.7]]  # a single point
+        folded, degree, _ = x._batch_curves(h, other)
+        pieces = x._batch_pieces(lo[0], lo[1], folded, degree)
+        for k in range(5):
+            points, weights = x.curve_piece(h[:, :2] / h[:, 2:], (lo[0, 0, k], lo[1, 0, k]), h[:, 2])
+            np.testing.assert_allclose(pieces[0, k, :, :2] / pieces[0, k, :, 2:], points, atol=1e-13)
+            np.testing.assert_allclose(pieces[0, k, :, 2], weights, rtol=1e-13)
+    # A lower degree is elevated first: the same curve, its pieces those of the elevated control points.
+    line, cubic = np.array([[0.0, 0.0, 1.0], [3.0, 3.0, 1.0]]), rng.uniform(-1, 1, (4, 3))
+    folded, degree, _ = x._batch_curves(line, cubic)
+    piece = x._batch_pieces(np.array([[0.25], [0.0]]), np.array([[0.75], [1.0]]), folded, degree)[0, 0]
+    np.testing.assert_allclose(piece[:, :2], [[0.75, 0.75], [1.25, 1.25], [1.75, 1.75], [2.25, 2.25]], atol=1e-15)
+
+
+def test_batched_clips_agree_with_the_plain_clip():
+    # One clip of many pieces at once: the kept ranges of clip_curve / the one-sided clips, to rounding.
+    rng = np.random.default_rng(93)
+    for n in (2, 3, 5):
+        pieces = rng.uniform(-1, 1, (2, 40, n + 1, 3))
+        pieces[..., 2] = np.where(rng.uniform(size=(2, 40, 1)) < 0.5, 1.0, rng.uniform(0.3, 3, (2, 40, n + 1)))
+        for perpendicular in (False, True):
+            sides = x._batch_fat_lines(pieces, 1e-12, perpendicular)[0]
+            with np.errstate(divide="ignore", invalid="ignore"):  # segments parallel to a side have no crossing
+                lo, hi = x._batch_kept(pieces @ sides[::-1], n)
+            for c in range(2):
+                for k in range(40):
+                    other = pieces[1 - c, k]
+                    kept = (0.0, 1.0)
+                    for line, low, high in x._bands(other[:, :2] / other[:, 2:], 1e-12, perpendicular):
+                        kept = x._common(kept, x._clip_homogeneous(pieces[c, k], line, low, high, True))
+                    if kept is None:
+                        assert not lo[c, k] <= hi[c, k]
+                    else:
+                        np.testing.assert_allclose([lo[c, k], hi[c, k]], kept, atol=1e-12)
 
 
 @pytest.mark.parametrize("kwargs, message", [
