@@ -33,6 +33,7 @@ import numpy as np
 from ._validation import _describe, as_count, as_float_array, as_parameter, as_points, as_weights
 from .bezier import from_homogeneous, to_homogeneous
 from .knot_intervals import cubic_basis_from_intervals, refine_basis
+from .surfaces import _pairs
 
 __all__ = [
     "tmesh",
@@ -339,16 +340,6 @@ def cubic_blending(knots, x):
     xs, scalar = as_parameter(x, "x")
     values = _cubic(k, xs)
     return float(values[0]) if scalar else values
-
-
-def _pairs(s, t) -> tuple[np.ndarray, np.ndarray, bool]:
-    ss, s_scalar = as_parameter(s, "s")
-    ts, t_scalar = as_parameter(t, "t")
-    try:
-        ss, ts = np.broadcast_arrays(ss, ts)
-    except ValueError:
-        raise ValueError(f"s: s ({ss.shape}) and t ({ts.shape}) do not broadcast together") from None
-    return ss.copy(), ts.copy(), s_scalar and t_scalar
 
 
 def blending_function(s_knots, t_knots, s, t):

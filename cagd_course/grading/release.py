@@ -48,7 +48,7 @@ SHOWS_SOURCE = re.compile(r"(?:show_source|getsource)\(")
 _DIGITS = re.compile(r"-?\d+\.\d{3,}")
 PACKAGE = "cagd_course"
 SUITE_NAMES = ("INPUT_ERRORS", "NEAR_MISS", "Raises", "Mismatch", "_describe", "close", "exact", "_compare",
-               "_compare_numbers", "_short")
+               "_compare_numbers", "_short", "_unit", "same_up_to_scale")
 CODEC_NAMES = ("MAX_ARRAY_SIZE", "MAX_DEPTH", "Unsupported", "encode", "_encode_array", "_PLAIN", "decode")
 # What a suite's comparisons may import: whatever is not the course (the reference, the grader, the suites).
 FORBIDDEN_IMPORTS = ("cagd_ref", "cagd_course", "tests")

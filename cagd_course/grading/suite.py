@@ -17,7 +17,7 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["Case", "Exercise", "Mismatch", "Raises", "close", "exact", "expected_value"]
+__all__ = ["Case", "Exercise", "Mismatch", "Raises", "close", "exact", "expected_value", "same_up_to_scale"]
 
 # Bad input must be rejected with one of these (the contract of cagd_ref).
 INPUT_ERRORS = ("ValueError", "TypeError")
@@ -200,3 +200,37 @@ def _compare_numbers(expected: np.ndarray, received, rtol, atol, at: str) -> str
 def _short(x) -> str:
     x = float(x)
     return repr(x) if math.isfinite(x) else str(x)
+
+
+def _unit(v) -> np.ndarray:
+    v = np.asarray(v, dtype=float).ravel()
+    return v / np.linalg.norm(v)
+
+
+def same_up_to_scale(tol: float):
+    """Arrays of the expected shape equal up to one nonzero factor: their unit vectors agree up to sign within tol."""
+
+    def compare(expected, received) -> str | None:
+        if isinstance(expected, Raises):
+            return close()(expected, received)
+        try:
+            got = np.asarray(received, dtype=float)
+        except (TypeError, ValueError):
+            return f"expected an array of shape {np.shape(expected)}, got {type(received).__name__}"
+        if got.shape != np.shape(expected):
+            return f"expected shape {np.shape(expected)}, got shape {got.shape}"
+        if not np.all(np.isfinite(got)):
+            return "got NaN or infinity"
+        if not np.any(got):
+            return "got all zeros, which is no answer (defined up to a nonzero factor)"
+        a, b = _unit(expected), _unit(got)
+        off = min(np.abs(a - b).max(), np.abs(a + b).max())
+        if off > tol:
+            worst = int(np.argmax(np.abs(a - np.sign(a @ b) * b)))
+            index = np.unravel_index(worst, np.shape(expected))
+            return (f"not a multiple of the expected answer: after scaling both to unit length, entry "
+                    f"{tuple(int(i) for i in index)} is {float(np.sign(a @ b) * b[worst]):.6g}, expected "
+                    f"{float(a[worst]):.6g}")
+        return None
+
+    return compare

@@ -17,7 +17,7 @@ from __future__ import annotations
 import numpy as np
 
 from cagd_course.examples import notes_example
-from cagd_course.grading.suite import Case, Exercise, Raises, close, exact
+from cagd_course.grading.suite import Case, Exercise, close, exact, same_up_to_scale
 from cagd_ref import plane_curves
 
 NOTES = "notes examples"
@@ -49,40 +49,6 @@ def _moved(c, angle, point):
     cos, sin = np.cos(angle), np.sin(angle)
     m = np.array([[cos, sin], [-sin, cos]])
     return plane_curves.transform_implicit(c, m, -m @ np.asarray(point, dtype=float))
-
-
-def _unit(v) -> np.ndarray:
-    v = np.asarray(v, dtype=float).ravel()
-    return v / np.linalg.norm(v)
-
-
-def same_up_to_scale(tol: float):
-    """Arrays of the expected shape equal up to one nonzero factor: their unit vectors agree up to sign within tol."""
-
-    def compare(expected, received) -> str | None:
-        if isinstance(expected, Raises):
-            return close()(expected, received)
-        try:
-            got = np.asarray(received, dtype=float)
-        except (TypeError, ValueError):
-            return f"expected an array of shape {np.shape(expected)}, got {type(received).__name__}"
-        if got.shape != np.shape(expected):
-            return f"expected shape {np.shape(expected)}, got shape {got.shape}"
-        if not np.all(np.isfinite(got)):
-            return "got NaN or infinity"
-        if not np.any(got):
-            return "got all zeros, which is no answer (defined up to a nonzero factor)"
-        a, b = _unit(expected), _unit(got)
-        off = min(np.abs(a - b).max(), np.abs(a + b).max())
-        if off > tol:
-            worst = int(np.argmax(np.abs(a - np.sign(a @ b) * b)))
-            index = np.unravel_index(worst, np.shape(expected))
-            return (f"not a multiple of the expected answer: after scaling both to unit length, entry "
-                    f"{tuple(int(i) for i in index)} is {float(np.sign(a @ b) * b[worst]):.6g}, expected "
-                    f"{float(a[worst]):.6g}")
-        return None
-
-    return compare
 
 
 def _homogeneous_random(rng, degrees, low=-4, high=4) -> np.ndarray:
