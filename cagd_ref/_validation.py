@@ -116,3 +116,13 @@ def as_scalar(value, name: str) -> float:
     if array.ndim != 0:
         raise ValueError(f"{name}: expected a single number, got shape {array.shape}")
     return float(array)
+
+
+def as_tolerance(tol, name: str = "tol", below_one: bool = False) -> float:
+    """A tolerance: a finite number > 0 (and < 1 where it is relative, `below_one`)."""
+    value = as_scalar(tol, name)
+    if below_one and not 0 < value < 1:
+        raise ValueError(f"{name}: expected a number in (0, 1), got {value}")
+    if value <= 0:
+        raise ValueError(f"{name}: expected a tolerance > 0, got {value}")
+    return value

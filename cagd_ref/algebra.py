@@ -40,7 +40,7 @@ from math import comb, exp, log
 import numpy as np
 from numpy.polynomial import polynomial as P
 
-from ._validation import as_count, as_float_array, as_points, as_scalar
+from ._validation import as_count, as_float_array, as_points, as_scalar, as_tolerance
 from .bezier import elevate, evaluate, to_homogeneous
 from .intersection import curve_implicit_bernstein
 from .polynomials import bernstein_multiply
@@ -99,13 +99,6 @@ def _nonzero_poly(f, name: str) -> np.ndarray:
     if not c.any():
         raise ValueError(f"{name}: the zero polynomial has no degree (every number is a root of it)")
     return c
-
-
-def _tolerance(tol) -> float:
-    tol = as_scalar(tol, "tol")
-    if not 0 < tol < 1:
-        raise ValueError(f"tol: expected a number in (0, 1), got {tol}")
-    return tol
 
 
 def _homogeneous(points, weights, name: str = "points", weights_name: str = "weights") -> np.ndarray:
@@ -369,7 +362,7 @@ def common_root_count(f, g, tol: float = 1e-9) -> int:
     2
     """
     a, b = _nonzero_poly(f, "f"), _nonzero_poly(g, "g")
-    tol = _tolerance(tol)
+    tol = as_tolerance(tol, below_one=True)
     if len(b) > len(a):
         a, b = b, a
     matrix = bezout_matrix(a, b)
@@ -415,7 +408,7 @@ def euclid_steps(f, g, tol: float = 1e-9) -> list[tuple[np.ndarray, np.ndarray, 
     [0.114924, 0.153232] [0.0]
     """
     a, b = _poly(f, "f"), _poly(g, "g")
-    tol = _tolerance(tol)
+    tol = as_tolerance(tol, below_one=True)
     if not a.any() and not b.any():
         raise ValueError("f, g: both are the zero polynomial, whose GCD is undefined")
     return _euclid(a, b, tol)
@@ -438,7 +431,7 @@ def poly_gcd(f, g, tol: float = 1e-9) -> np.ndarray:
     [1.0]
     """
     a, b = _poly(f, "f"), _poly(g, "g")
-    tol = _tolerance(tol)
+    tol = as_tolerance(tol, below_one=True)
     if not a.any() and not b.any():
         raise ValueError("f, g: both are the zero polynomial, whose GCD is undefined")
     steps = _euclid(a, b, tol)
@@ -830,7 +823,7 @@ def invert(points, xy, weights=None, tol: float = 1e-9) -> float | np.ndarray:
     """
     h = _homogeneous(points, weights)
     pts, single = _xy(xy)
-    tol = _tolerance(tol)
+    tol = as_tolerance(tol, below_one=True)
     family = _inversion_family(h)
     ts = _invert([_normalised(*pair) for pair in family], pts, tol)
     return float(ts[0]) if single else ts
@@ -894,7 +887,7 @@ def intersect_implicit(p, q, p_weights=None, q_weights=None, tol: float = 1e-9) 
     """
     hp = _homogeneous(p, p_weights, "p", "p_weights")
     hq = _homogeneous(q, q_weights, "q", "q_weights")
-    tol = _tolerance(tol)
+    tol = as_tolerance(tol, below_one=True)
     f = _implicit_of(hp, "p")
     g = curve_implicit_bernstein(f, hq[:, :2] / hq[:, 2:], hq[:, 2])
     i, j = np.indices(f.shape)

@@ -32,6 +32,7 @@ from ._validation import (
     as_parameter,
     as_points,
     as_scalar,
+    as_tolerance,
     as_vector,
 )
 from .bezier import bernstein_matrix, de_casteljau
@@ -517,13 +518,6 @@ def interpolation_error_bound(nodes: ArrayLike, derivative_bound: float, x: Arra
     return bound * np.abs(node_polynomial(roots, x)) / factorial(len(roots))
 
 
-def _tolerance(tol) -> float:
-    tol = as_scalar(tol, "tol")
-    if tol <= 0:
-        raise ValueError(f"tol: expected a tolerance > 0, got {tol}")
-    return tol
-
-
 def linear_segments_needed(a: float, b: float, second_derivative_bound: float, tol: float) -> int:
     """Equal chords that keep |f - polyline| <= tol on [a, b] if |f''| <= L: ceil((b - a) √(L / (8 tol))). Notes §10.6.
 
@@ -533,7 +527,7 @@ def linear_segments_needed(a: float, b: float, second_derivative_bound: float, t
     """
     a, b = as_scalar(a, "a"), as_scalar(b, "b")
     bound = as_scalar(second_derivative_bound, "second_derivative_bound")
-    tol = _tolerance(tol)
+    tol = as_tolerance(tol)
     if not a < b:
         raise ValueError(f"a, b: expected a < b, got a = {a}, b = {b}")
     if bound < 0:
@@ -568,7 +562,7 @@ def bezier_segments_needed(points: ArrayLike, tol: float) -> int:
     [5, 16, 49]
     """
     bounds = second_derivative_bounds(points)
-    tol = _tolerance(tol)
+    tol = as_tolerance(tol)
     return max(1, int(np.ceil(np.sqrt(np.linalg.norm(bounds) / (8 * tol)))))
 
 

@@ -21,7 +21,7 @@ from math import comb
 
 import numpy as np
 
-from ._validation import as_count, as_float_array, as_line, as_points, as_scalar, as_vector, as_weights
+from ._validation import as_count, as_float_array, as_line, as_points, as_scalar, as_tolerance, as_vector, as_weights
 from .bezier import elevate, evaluate, hodograph, subdivide, to_homogeneous
 from .geometry import join, normalize_line
 from .interpolation import second_derivative_bounds
@@ -277,7 +277,7 @@ def curve_implicit_intersection(f, points, weights=None, tol: float = 1e-12) -> 
     """
     f, d = _implicit(f)
     g = curve_implicit_bernstein(f, points, weights)
-    tol = _tolerance(tol)
+    tol = as_tolerance(tol, below_one=True)
     h = _homogeneous_columns(points, weights)
     i, j = np.nonzero(f)
     size = np.abs(h).max(axis=0)
@@ -286,13 +286,6 @@ def curve_implicit_intersection(f, points, weights=None, tol: float = 1e-12) -> 
         raise ValueError("f: the curve lies on the implicit curve f = 0 (the substitution vanishes identically)")
     ts = bernstein_roots(g, tol=tol)
     return ts, evaluate(_planar(points), ts, weights)
-
-
-def _tolerance(tol) -> float:
-    tol = as_scalar(tol, "tol")
-    if not 0 < tol < 1:
-        raise ValueError(f"tol: expected a number in (0, 1), got {tol}")
-    return tol
 
 
 def osculating_circle_curvature(points, weights=None) -> float:
@@ -399,7 +392,7 @@ def intersect_by_subdivision(p, q, tol: float = 1e-9) -> np.ndarray:
     [0.5, 0.5]
     """
     pts_p, pts_q = _two_curves(p, q)
-    return _subdivision_search(pts_p, pts_q, _tolerance(tol))
+    return _subdivision_search(pts_p, pts_q, as_tolerance(tol, below_one=True))
 
 
 def _subdivision_search(p: np.ndarray, q: np.ndarray, tol: float, log: list | None = None) -> np.ndarray:
@@ -458,7 +451,7 @@ def intersect_by_intervals(p, q, tol: float = 1e-9) -> np.ndarray:
     [0.111328, 0.388301, 0.5, 0.611699, 0.888672]
     """
     pts_p, pts_q = _two_curves(p, q)
-    return _interval_search(pts_p, pts_q, _tolerance(tol))
+    return _interval_search(pts_p, pts_q, as_tolerance(tol, below_one=True))
 
 
 def monotone_breaks(points) -> np.ndarray:
@@ -571,7 +564,7 @@ def intersect_by_implicitization(p, q, p_weights=None, q_weights=None, tol: floa
     5
     """
     pts_p, pts_q = _two_curves(p, q)
-    tol = _tolerance(tol)
+    tol = as_tolerance(tol, below_one=True)
     corner = np.minimum(pts_p.min(axis=0), pts_q.min(axis=0))
     size = max(_scale(pts_p - corner, pts_q - corner), 1e-300)
     hp = _homogeneous_columns((pts_p - corner) / size, p_weights, "p", "p_weights")
@@ -1108,7 +1101,7 @@ def intersect_curves(p, q, tol: float = 1e-9, p_weights=None, q_weights=None, ma
     [[0.429289175, 0.548961333]]
     """
     pts_p, pts_q, hp, hq = _curve_pair(p, q, p_weights, q_weights)
-    tol = _tolerance(tol)
+    tol = as_tolerance(tol, below_one=True)
     max_steps = as_count(max_steps, "max_steps", minimum=1)
     boxes = _batched_search(hp, hq, tol, max_steps, perpendicular, lambda: _raise_if_overlapping(hp, hq),
                             _scale(pts_p, pts_q))
@@ -1130,7 +1123,7 @@ def clip_trace(p, q, tol: float = 1e-9, p_weights=None, q_weights=None, max_step
     """
     _, _, hp, hq = _curve_pair(p, q, p_weights, q_weights)
     log: list[ClipStep] = []
-    search = _Search(hp, hq, (p_weights is not None, q_weights is not None), _tolerance(tol),
+    search = _Search(hp, hq, (p_weights is not None, q_weights is not None), as_tolerance(tol, below_one=True),
                      as_count(max_steps, "max_steps", minimum=1), perpendicular, log)
     search.run(lambda: _raise_if_overlapping(hp, hq))
     return log
@@ -1149,7 +1142,7 @@ def search_steps(p, q, method: str = "clipping", tol: float = 1e-9) -> list[Sear
     True
     """
     pts_p, pts_q = _two_curves(p, q)
-    tol = _tolerance(tol)
+    tol = as_tolerance(tol, below_one=True)
     log: list = []
     if method == "subdivision":
         _subdivision_search(pts_p, pts_q, tol, log)

@@ -37,8 +37,17 @@ from itertools import combinations
 import numpy as np
 from numpy.polynomial import polynomial as P
 
-from ._validation import as_count, as_float_array, as_interval, as_parameter, as_points, as_scalar, as_vector
-from .algebra import poly_gcd, resultant
+from ._validation import (
+    as_count,
+    as_float_array,
+    as_interval,
+    as_parameter,
+    as_points,
+    as_scalar,
+    as_tolerance,
+    as_vector,
+)
+from .algebra import _poly, _size, _trimmed, poly_gcd, resultant
 from .bezier import from_homogeneous
 from .polynomials import power_to_bernstein
 
@@ -114,22 +123,8 @@ def _mul2(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     return out
 
 
-def _poly1(f, name: str) -> np.ndarray:
-    c = as_float_array(f, name)
-    if c.ndim != 1 or c.size == 0:
-        raise ValueError(f"{name}: expected ascending power coefficients of shape (n+1,), got shape {c.shape}")
-    nonzero = np.flatnonzero(c)
-    return c[: nonzero[-1] + 1] if nonzero.size else c[:1]
-
-
 def _point(point, name: str = "point") -> np.ndarray:
     return as_vector(point, name, dim=2)
-
-
-def _size_at(c: np.ndarray, pts: np.ndarray) -> np.ndarray:
-    """Σ |c_ij| max(1, |x|)^i max(1, |y|)^j: the scale rounding errors of f at each point are measured against."""
-    big = np.maximum(np.abs(pts), 1.0)
-    return P.polyval2d(big[:, 0], big[:, 1], np.abs(c))
 
 
 # --- §19.1 genus -------------------------------------------------------------------------------------------------
@@ -254,18 +249,11 @@ def _parts(sq: np.ndarray) -> list[np.ndarray]:
 # --- §19.2 multiplicity, tangent cone, classification ---------------------------------------------------------------
 
 
-def _tolerance(tol) -> float:
-    tol = as_scalar(tol, "tol")
-    if not 0 < tol < 1:
-        raise ValueError(f"tol: expected a number in (0, 1), got {tol}")
-    return tol
-
-
 def _local(c, point, tol) -> tuple[list[np.ndarray], int, float]:
     """The homogeneous parts at `point`, its multiplicity, and the scale the zero tests used."""
     a = _implicit(c)
     p = _point(point)
-    tol = _tolerance(tol)
+    tol = as_tolerance(tol, below_one=True)
     moved = _transform(a, np.eye(2), p)
     scale = float(np.abs(moved).max())
     parts = _parts(moved)
@@ -316,7 +304,7 @@ def tangent_directions(c, point, tol: float = ZERO_TOL) -> np.ndarray:
     """
     g = tangent_cone(c, point, tol)
     found = []
-    g_trim = _poly1(g, "g")
+    g_trim = _poly(g, "g")
     if len(g_trim) - 1 < len(g) - 1:
         found.append((0.0, 1.0))
     if len(g_trim) > 1:
@@ -364,7 +352,7 @@ def classify_double_point(c, point, tol: float = ZERO_TOL) -> str:
     'acnode'
     """
     parts, r, _ = _local(c, point, tol)
-    tol = _tolerance(tol)
+    tol = as_tolerance(tol, below_one=True)
     if r != 2:
         what = {0: "not on the curve", 1: "a simple point of the curve"}.get(r, f"a point of multiplicity {r}")
         raise ValueError(f"point: {what}, not a double point")
@@ -393,7 +381,7 @@ def discriminant(coeffs) -> float:
     >>> round(discriminant([-2.0, 3.0, 0.0, -1.0]), 9)  # -(t - 1)² (t + 2): a double root
     0.0
     """
-    p = _poly1(coeffs, "coeffs")
+    p = _poly(coeffs, "coeffs")
     if len(p) < 2:
         raise ValueError(f"coeffs: a polynomial of degree >= 1 is needed (after dropping trailing zeros), got "
                          f"{p.tolist()}")
@@ -431,8 +419,8 @@ def _resultant_y(f: np.ndarray, g: np.ndarray) -> np.ndarray:
     m, n = _y_degree(f), _y_degree(g)
     if m == 0 and n == 0:
         return np.ones(1)
-    fc = [_poly1(f[:, k], "f") if np.any(f[:, k]) else None for k in range(m + 1)]
-    gc = [_poly1(g[:, k], "g") if np.any(g[:, k]) else None for k in range(n + 1)]
+    fc = [_poly(f[:, k], "f") if np.any(f[:, k]) else None for k in range(m + 1)]
+    gc = [_poly(g[:, k], "g") if np.any(g[:, k]) else None for k in range(n + 1)]
     size = m + n
     rows: list[list[np.ndarray | None]] = []
     for r in range(n):
@@ -453,11 +441,6 @@ def _elimination(eliminate: str) -> bool:
     if eliminate not in ("x", "y"):
         raise ValueError(f"eliminate: expected 'x' or 'y', got {eliminate!r}")
     return eliminate == "x"
-
-
-def _trim(r: np.ndarray, zero: float = 0.0) -> np.ndarray:
-    keep = np.flatnonzero(np.abs(r) > zero)
-    return r[: keep[-1] + 1] if keep.size else np.zeros(1)
 
 
 def curve_resultant(f, g, eliminate: str = "y") -> np.ndarray:
@@ -482,7 +465,7 @@ def curve_resultant(f, g, eliminate: str = "y") -> np.ndarray:
     a, b = _implicit(f, "f", constant_ok=True), _implicit(g, "g", constant_ok=True)
     if _elimination(eliminate):
         a, b = a.T, b.T
-    return _trim(_resultant_y(a, b))
+    return _trimmed(_resultant_y(a, b), 0.0)
 
 
 def curve_discriminant(c, eliminate: str = "y") -> np.ndarray:
@@ -504,7 +487,7 @@ def curve_discriminant(c, eliminate: str = "y") -> np.ndarray:
     if a.shape[1] < 2 or not np.any(a[:, 1:]):
         raise ValueError(f"c: f does not depend on {eliminate}, so it has no discriminant in {eliminate}")
     derivative = P.polyder(a, axis=1)
-    return _trim(_resultant_y(a, derivative))
+    return _trimmed(_resultant_y(a, derivative), 0.0)
 
 
 def _real_roots(r: np.ndarray) -> np.ndarray:
@@ -535,14 +518,14 @@ def _intersect(f: np.ndarray, g: np.ndarray, transpose: bool) -> np.ndarray:
     if np.abs(r).max() <= 1e-12 * bound:
         raise ValueError("f, g: the curves share a component (their resultant vanishes identically)")
     points = []
-    for x0 in _real_roots(_trim(r)):
+    for x0 in _real_roots(_trimmed(r, 0.0)):
         ha, hb = _column_at(a, x0), _column_at(b, x0)
         sizes = [P.polyval(max(1.0, abs(x0)), np.abs(c)).max() for c in (a, b)]
         if np.abs(ha).max() <= 1e-10 * sizes[0] and np.abs(hb).max() <= 1e-10 * sizes[1]:
             raise ValueError(f"f, g: the curves share a component (the line {'y' if transpose else 'x'} = "
                              f"{x0:.6g} lies on both)")
         scale = max(np.abs(ha).max(), np.abs(hb).max())
-        ha, hb = _trim(ha, 1e-13 * scale), _trim(hb, 1e-13 * scale)
+        ha, hb = _trimmed(ha, 1e-13 * scale), _trimmed(hb, 1e-13 * scale)
         candidates = np.zeros(0)
         if ha.any() or hb.any():
             d = poly_gcd(ha, hb, tol=1e-7)
@@ -565,7 +548,7 @@ def _finish_points(pts: np.ndarray, f: np.ndarray, g: np.ndarray, tol: float) ->
         return np.zeros((0, 2))
     ok = np.ones(len(pts), dtype=bool)
     for c in (f, g):
-        ok &= np.abs(P.polyval2d(pts[:, 0], pts[:, 1], c)) <= max(tol, RESIDUAL_TOL) * _size_at(c, pts)
+        ok &= np.abs(P.polyval2d(pts[:, 0], pts[:, 1], c)) <= max(tol, RESIDUAL_TOL) * _size(c, pts)
     pts = pts[ok]
     pts = pts[np.lexsort((pts[:, 1], pts[:, 0]))]
     kept: list[np.ndarray] = []
@@ -596,7 +579,7 @@ def implicit_intersections(f, g, tol: float = ZERO_TOL) -> np.ndarray:
     [[-15.0, 9.0], [-13.0, 5.0], [12.0, 0.0], [20.0, 16.0]]
     """
     a, b = _implicit(f, "f"), _implicit(g, "g")
-    tol = _tolerance(tol)
+    tol = as_tolerance(tol, below_one=True)
     transpose = _y_degree(a) == 0 and _y_degree(b) == 0
     return _finish_points(_intersect(a, b, transpose), a, b, tol)
 
@@ -614,7 +597,7 @@ def singular_points(c, tol: float = ZERO_TOL) -> np.ndarray:
     [[2.0, 3.0]]
     """
     a = _implicit(c)
-    tol = _tolerance(tol)
+    tol = as_tolerance(tol, below_one=True)
     fx, fy = P.polyder(a, axis=0), P.polyder(a, axis=1)
     if not np.any(fx) or not np.any(fy):
         # f depends on one variable only: its singular points are the multiple roots, lines of them.
@@ -627,7 +610,7 @@ def singular_points(c, tol: float = ZERO_TOL) -> np.ndarray:
     pts = _finish_points(pts, fx, fy, tol)
     if len(pts) == 0:
         return pts
-    on = np.abs(P.polyval2d(pts[:, 0], pts[:, 1], a)) <= max(tol, RESIDUAL_TOL) * _size_at(a, pts)
+    on = np.abs(P.polyval2d(pts[:, 0], pts[:, 1], a)) <= max(tol, RESIDUAL_TOL) * _size(a, pts)
     return pts[on]
 
 
@@ -661,7 +644,7 @@ def parametrize_by_pencil(c, point, tol: float = ZERO_TOL) -> np.ndarray:
     """
     a = _implicit(c)
     p = _point(point)
-    tol = _tolerance(tol)
+    tol = as_tolerance(tol, below_one=True)
     n = _degree(a)
     if n < 2:
         raise ValueError("c: a line (degree 1) needs no pencil; give a curve of degree 2 or more")

@@ -32,7 +32,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validation import as_count, as_float_array, as_interval, as_parameter, as_points, as_scalar
+from ._validation import as_count, as_float_array, as_interval, as_parameter, as_points, as_scalar, as_tolerance
 from .bezier import bernstein_matrix, elevate, subdivide, to_homogeneous
 from .bspline import basis_matrix, bezier_segments, de_boor, insert_knot
 from .continuity import continuity
@@ -884,13 +884,6 @@ def second_difference_bounds(points) -> tuple[float, float, float]:
     return float(m1), float(m2), float(m3)
 
 
-def _tolerance(tol) -> float:
-    value = as_scalar(tol, "tol")
-    if value <= 0:
-        raise ValueError(f"tol: expected a positive tolerance, got {value}")
-    return value
-
-
 def curve_tessellation_steps(points, tol) -> tuple[float, int]:
     """(δ, n): the step δ = sqrt(8 tol / M) and n = ⌈1/δ⌉ segments that keep a polyline within tol. Notes §15.4.
 
@@ -905,7 +898,7 @@ def curve_tessellation_steps(points, tol) -> tuple[float, int]:
     (0.0772195, 13)
     """
     pts = as_points(points)
-    eps = _tolerance(tol)
+    eps = as_tolerance(tol)
     degree = len(pts) - 1
     bound = degree * (degree - 1) * float(np.linalg.norm(np.diff(pts, 2, axis=0), axis=1).max()) if degree >= 2 else 0.0
     delta = 1.0 if bound == 0 else min(1.0, float(np.sqrt(8 * eps / bound)))
@@ -931,7 +924,7 @@ def tessellation_deltas(points, tol) -> tuple[float, float]:
     [0.00668268, 0.00771649]
     """
     m1, m2, m3 = second_difference_bounds(points)
-    eps = _tolerance(tol)
+    eps = as_tolerance(tol)
     if m1 == 0 and m2 == 0 and m3 == 0:
         return 1.0, 1.0
     if m1 == 0:
