@@ -131,9 +131,9 @@ def plot_bspline(ax, points, knots, labels=True, knot_marks: bool = True, knot_v
         ax.plot(*np.vstack([samples[:, 0], samples[-1:, -1]]).T, "k|", markersize=9)
     if knot_marks and knot_values:
         for span, curve in zip(intervals, samples):
-            ax.annotate(f"t={knot_label(span[0])}", curve[0], xytext=(3, -12), textcoords="offset points", fontsize=7)
+            ax.annotate(f"t={knot_label(span[0])}", curve[0], xytext=(3, -12), textcoords="offset points", fontsize=8)
         ax.annotate(f"t={knot_label(intervals[-1, 1])}", samples[-1, -1], xytext=(3, -12), textcoords="offset points",
-                    fontsize=7)
+                    fontsize=8)
     if bezier_polygons:
         for k, segment in enumerate(bezier_segments(pts, knots)):
             ax.plot(*segment.T, "s:", color=colors[k % len(colors)], markersize=3, linewidth=1, alpha=0.8)

@@ -218,7 +218,7 @@ def plot_v_rule(ax, values, end: str = "left", color: str = "C3") -> Axes:
         ax.plot(v, 0.0, "v", color=color, markersize=6)
         # Alternate the labels above and below the axis: neighbouring meets are often close.
         ax.annotate(f"$V_{{{i}}}$={v:.4g}", (v, 0.0), xytext=(0, 7 if k % 2 else -13), textcoords="offset points",
-                    fontsize=7, ha="center", color=color)
+                    fontsize=8, ha="center", color=color)
     ax.set_xlabel("t")
     return ax
 

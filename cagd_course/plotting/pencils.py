@@ -118,7 +118,7 @@ def plot_parameter_line(ax, ends, ticks=None, **style) -> Axes:
     ax.plot(*marks.T, "|" if abs(ends[1, 1] - ends[0, 1]) < abs(ends[1, 0] - ends[0, 0]) else "_",
             color=options["color"], markersize=9)
     for t, mark in zip(ticks, marks):
-        ax.annotate(f"{t:g}", mark, textcoords="offset points", xytext=(5, 4), fontsize=7, color=options["color"])
+        ax.annotate(f"{t:g}", mark, textcoords="offset points", xytext=(5, 4), fontsize=8, color=options["color"])
     return ax
 
 

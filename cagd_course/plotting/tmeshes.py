@@ -51,7 +51,7 @@ def plot_tmesh(ax, mesh, labels: bool = True, intervals: bool = False, color: st
             length = float(np.abs(vertices[b] - vertices[a]).sum())
             horizontal = vertices[a, 1] == vertices[b, 1]
             ax.annotate(f"{length:g}", middle, xytext=(0, 3) if horizontal else (3, 0), textcoords="offset points",
-                        fontsize=7, color="C0", ha="center" if horizontal else "left",
+                        fontsize=8, color="C0", ha="center" if horizontal else "left",
                         va="bottom" if horizontal else "center")
     junctions = tjunctions(mesh)
     ax.plot(*vertices.T, "o", color=color, markersize=4, zorder=3)
@@ -62,7 +62,7 @@ def plot_tmesh(ax, mesh, labels: bool = True, intervals: bool = False, color: st
         ax.plot(*vertices[index], "o", color="C3", markersize=8, zorder=5)
     if labels:
         for i, (s, t) in enumerate(vertices):
-            ax.annotate(f"$P_{{{i}}}$", (s, t), xytext=(3, 3), textcoords="offset points", fontsize=7, zorder=6)
+            ax.annotate(f"$P_{{{i}}}$", (s, t), xytext=(3, 3), textcoords="offset points", fontsize=8, zorder=6)
     if show_knots:
         ax.set_xticks(np.unique(vertices[:, 0]))
         ax.set_yticks(np.unique(vertices[:, 1]))

@@ -14,6 +14,7 @@ import nbformat
 import pytest
 
 from cagd_course.manifest import load_course
+from cagd_course.notebook import HIDDEN_ROLES, ROLES
 
 ROOT = Path(__file__).resolve().parents[2]
 TAG = "reference-source"
@@ -36,10 +37,60 @@ def only_displays_source(source: str) -> bool:
 @pytest.mark.parametrize("path", CHAPTERS)
 def test_reference_source_is_shown_only_in_tagged_cells_of_its_own(path):
     for cell in nbformat.read(path, as_version=4).cells:
-        if cell.cell_type != "code" or re.search(r"^\s*def show_source", cell.source, re.M):
+        if cell.cell_type != "code":
             continue
         tagged = TAG in cell.metadata.get("tags", [])
         if SHOWS_SOURCE.search(cell.source):
             assert tagged, f"cell {cell.id} shows reference source: tag it {TAG!r}"
         if tagged:
             assert only_displays_source(cell.source), f"cell {cell.id} is tagged {TAG!r} but does more than display"
+
+
+# ---------------------------------------------------------------- cell roles (the reading form)
+
+
+def _role(cell) -> list[str]:
+    return [tag for tag in cell.metadata.get("tags", []) if tag in ROLES]
+
+
+@pytest.mark.parametrize("path", CHAPTERS)
+def test_every_code_cell_has_one_role_and_is_collapsed_as_its_role_says(path):
+    for index, cell in enumerate(nbformat.read(path, as_version=4).cells, start=1):
+        if cell.cell_type != "code":
+            continue
+        roles = _role(cell)
+        assert len(roles) == 1, f"cell {index} has roles {roles}: tag it with exactly one of {sorted(ROLES)}"
+        hidden = cell.metadata.get("jupyter", {}).get("source_hidden", False)
+        assert hidden == (roles[0] in HIDDEN_ROLES), (
+            f"cell {index} ({roles[0]}): metadata.jupyter.source_hidden must be {roles[0] in HIDDEN_ROLES}"
+        )
+
+
+@pytest.mark.parametrize("path", CHAPTERS)
+def test_check_cells_end_with_their_verdict_and_explorers_are_one_expression(path):
+    for index, cell in enumerate(nbformat.read(path, as_version=4).cells, start=1):
+        if cell.cell_type != "code":
+            continue
+        body = ast.parse(cell.source).body
+        if _role(cell) == ["check"]:
+            last = body[-1] if body else None
+            call = last.value if isinstance(last, ast.Expr) and isinstance(last.value, ast.Call) else None
+            assert getattr(getattr(call, "func", None), "id", None) == "verified", (
+                f"check cell {index} must end with verified('what it proved')"
+            )
+            assert call.args and isinstance(call.args[0], (ast.Constant, ast.JoinedStr)), (
+                f"check cell {index}: verified() takes the sentence saying what was proved"
+            )
+        if _role(cell) == ["explorer"]:
+            assert len(body) == 1 and isinstance(body[0], ast.Expr), (
+                f"explorer cell {index} must be the one expression that shows a widget"
+            )
+
+
+@pytest.mark.parametrize("path", CHAPTERS)
+def test_chapters_use_the_shared_notebook_helpers_instead_of_their_own(path):
+    for index, cell in enumerate(nbformat.read(path, as_version=4).cells, start=1):
+        if cell.cell_type == "code":
+            assert not re.search(r"^def (show_source|verified)\b", cell.source, re.M), (
+                f"cell {index} defines its own helper: import it from cagd_course.notebook"
+            )
