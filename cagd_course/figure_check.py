@@ -102,16 +102,19 @@ def _shown_scale(fig: Figure) -> float:
 
 
 def _tiny(texts, fig: Figure) -> list[str]:
+    """One finding per figure: how many texts are shown below MIN_POINTS, the smallest first."""
     scale = _shown_scale(fig)
-    findings = []
-    for text, _box in texts:
-        shown = text.get_fontsize() * scale
-        if shown < MIN_POINTS - 1e-9:
-            findings.append(
-                f"text {_label(text)} is {shown:.1f} pt in the book ({text.get_fontsize():g} pt in a "
-                f"{fig.get_figwidth():g}-inch figure) in {_where(text, fig)}; at least {MIN_POINTS:g} pt"
-            )
-    return findings
+    small = sorted(
+        (text.get_fontsize() * scale, text) for text, _box in texts if text.get_fontsize() * scale < MIN_POINTS - 1e-9
+    )
+    if not small:
+        return []
+    examples = ", ".join(f"{_label(text)} {shown:.1f} pt" for shown, text in small[:3])
+    return [
+        f"{len(small)} texts are shown below {MIN_POINTS:g} pt ({examples}, ...): the figure is "
+        f"{fig.get_figwidth():g} in wide and the book's column {BOOK_COLUMN_PX / CSS_PX_PER_INCH:.2f} in, so "
+        f"its text is shown at {scale:.2f} of its size"
+    ]
 
 
 def _unexplained_series(fig: Figure) -> list[str]:
@@ -138,9 +141,9 @@ def figure_findings(fig: Figure) -> list[str]:
 def install(shell, report: Path | str) -> None:
     """Check every figure `shell` (an IPython shell) displays as PNG; append findings to the file `report`.
 
-    Each line is JSON: {"cell": <the cell's id, or its first line>, "findings": [...]}. The PNG itself is made as before. The inline
-    backend registers its PNG formatter only when pyplot is first imported, so the check wraps whatever
-    formatter is registered before each cell runs.
+    Each line is JSON: {"cell": <the cell's id, or its first line>, "findings": [...]}. The PNG itself is
+    made as before. The inline backend registers its PNG formatter only when pyplot is first imported,
+    so the check wraps whatever formatter is registered before each cell runs.
     """
     path = Path(report)
     current = {"cell": None}
