@@ -22,6 +22,7 @@ from pathlib import Path
 import nbformat
 from tqdm import tqdm
 
+from ..figure_check import INLINE_BACKEND
 from ..manifest import COURSE_ENV, Chapter, Course, load_course
 from ..widgets._static import STATIC_FRAMES_ENV
 
@@ -135,22 +136,55 @@ def _write_if_changed(path: Path, text: str) -> None:
         path.write_text(text, encoding="utf-8")
 
 
+# role -> (MyST-NB tags, the toggle's label) of a chapter's code cell in the book (cagd_course.notebook.ROLES)
+BOOK_FORM = {
+    "setup": (["remove-cell"], ""),
+    "check": (["hide-input"], "Show the check"),
+    "figure": (["hide-input"], "Show the code of this figure"),
+    # The output of a reference-source cell is the listing: the input goes, the listing is folded.
+    "reference-source": (["remove-input", "hide-output"], "Reference implementation{name}: try the exercise first"),
+}
+
+
+def _book_form(notebook: nbformat.NotebookNode) -> nbformat.NotebookNode:
+    """The notebook as the book shows it: each code cell's role becomes MyST-NB's tags and toggle label."""
+    for cell in notebook.cells:
+        if cell.cell_type != "code":
+            continue
+        tags = cell.metadata.get("tags", [])
+        role = next((tag for tag in tags if tag in BOOK_FORM), None)
+        if role is None:
+            continue
+        extra, label = BOOK_FORM[role]
+        cell.metadata["tags"] = [*tags, *(tag for tag in extra if tag not in tags)]
+        if label:
+            names = re.findall(r"show_source\((\w+)", cell.source)
+            label = label.format(name=f" of {', '.join(names)}" if names else "")
+            hide = "Hide the listing" if role == "reference-source" else "Hide the code"
+            cell.metadata["mystnb"] = {"code_prompt_show": label, "code_prompt_hide": hide}
+    return notebook
+
+
 def _stage(course: Course, chapters: list[Chapter], src: Path) -> None:
     """The Sphinx source folder: the landing page and copies of the notebooks, at their places in the course.
 
     Copies rather than links, so that links between notebooks resolve inside the
-    source folder; a copy is rewritten only when its notebook changed, and
-    notebooks no longer in the book go.
+    source folder; chapters are copied in their book form (`_book_form`). A copy
+    is rewritten only when it changed, and notebooks no longer in the book go.
     """
     src.mkdir(parents=True, exist_ok=True)
     wanted = {}
     for path in (p for c in chapters for p in (c.notebook, c.exercises) if p is not None):
         wanted[src / path.relative_to(course.root)] = path
+    chapter_files = {c.notebook for c in chapters}
     for stale in set(src.rglob("*.ipynb")) - set(wanted):
         stale.unlink()
     for copy, original in wanted.items():
-        if not copy.is_file() or copy.read_bytes() != original.read_bytes():
-            copy.parent.mkdir(parents=True, exist_ok=True)
+        copy.parent.mkdir(parents=True, exist_ok=True)
+        if original in chapter_files:
+            text = nbformat.writes(_book_form(nbformat.read(original, as_version=4)))
+            _write_if_changed(copy, text)
+        elif not copy.is_file() or copy.read_bytes() != original.read_bytes():
             shutil.copyfile(original, copy)
     _write_if_changed(src / "index.md", _landing_page(course, chapters))
 
@@ -264,6 +298,30 @@ def _execute_all(cache, notebooks: dict[int, Path], timeout: int, progress: bool
     return runs
 
 
+def _drew_no_figure(notebook: nbformat.NotebookNode) -> bool:
+    """True when the notebook has `figure` cells and none of them has an image among its outputs.
+
+    That is what an execution under a non-inline matplotlib backend leaves (e.g. MPLBACKEND=Agg inherited
+    from a server's environment): `plt.show()` draws nothing, and the cache would keep the empty outputs.
+    """
+    figures = [c for c in notebook.cells if c.cell_type == "code" and "figure" in c.metadata.get("tags", [])]
+    has_image = any(
+        key.startswith("image/") for c in figures for out in c.get("outputs", []) for key in out.get("data", {})
+    )
+    return bool(figures) and not has_image
+
+
+def _forget_figureless(cache, notebooks: dict[int, Path]) -> None:
+    """Remove from the cache the executions of chapters that lost their figures, so they run again."""
+    for path in notebooks.values():
+        try:
+            record = cache.match_cache_notebook(nbformat.read(path, as_version=4))
+        except KeyError:
+            continue
+        if _drew_no_figure(cache.get_cache_bundle(record.pk).nb):
+            cache.remove_cache(record.pk)
+
+
 @contextmanager
 def _environment(**values: str):
     """Set environment variables for the run (the kernels inherit them), then put back what was there."""
@@ -332,9 +390,14 @@ def build_book(
     src = work / "src"
     _stage(course, selected, src)
     fingerprint = _fingerprint()
-    notebooks = {c.number: c.notebook for c in selected}
-    with _environment(**{COURSE_ENV: str(course.root), STATIC_FRAMES_ENV: str(frames)}):
-        runs = _execute_all(_open_cache(work / "jupyter_cache", fingerprint), notebooks, timeout, progress)
+    # The staged copies (book form) are what Sphinx reads, so they are what the cache must hold.
+    notebooks = {c.number: src / c.notebook.relative_to(course.root) for c in selected}
+    # The kernels draw inline whatever backend the environment names (MPLBACKEND=Agg would draw nothing).
+    environment = {COURSE_ENV: str(course.root), STATIC_FRAMES_ENV: str(frames), "MPLBACKEND": INLINE_BACKEND}
+    with _environment(**environment):
+        cache = _open_cache(work / "jupyter_cache", fingerprint)
+        _forget_figureless(cache, notebooks)
+        runs = _execute_all(cache, notebooks, timeout, progress)
         failures = {n: run.error for n, run in runs.items() if run.error}
         rel = {c.number: c.notebook.relative_to(course.root).as_posix() for c in selected}
         exercises = [c.exercises.relative_to(course.root).as_posix() for c in selected if c.exercises is not None]

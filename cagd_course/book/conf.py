@@ -12,6 +12,11 @@ extensions = [
     "myst_nb",
     # MathJax 3 from a PyPI package, copied into the book: formulas render without a network.
     "sphinx-mathjax-offline",
+    # Mathematical environments (definition, theorem, proof, algorithm) and questions with folded answers,
+    # written as MyST directives in the chapters; JupyterLab renders the same with jupyterlab-myst.
+    "sphinx_proof",
+    "sphinx_exercise",
+    "sphinx_togglebutton",
     "cagd_course.book.extension",
 ]
 
@@ -35,6 +40,8 @@ nb_execution_allow_errors = False
 nb_execution_raise_on_error = False
 nb_execution_show_tb = True
 nb_merge_streams = True
+# Markdown outputs (tables of the notes' worked examples) are read as MyST, so their tables render.
+nb_render_markdown_format = "myst"
 # Explorers give a live widget, a PNG and (in the book's kernels) a self-contained HTML figure whose slider works
 # without a kernel. A static page cannot run a widget, so the book drops the widget view and shows that figure.
 nb_mime_priority_overrides = [

@@ -30,6 +30,7 @@ import operator
 import sys
 from dataclasses import dataclass, field
 from functools import cache
+from html import escape
 from pathlib import Path
 
 import numpy as np
@@ -76,26 +77,54 @@ class NotesExample:
         return tuple(np.copy(self.inputs[name]) if isinstance(self.inputs[name], np.ndarray) else self.inputs[name]
                      for name in names)
 
+    def _rows(self) -> list[tuple[str, str, str]]:
+        rows = [("input", k, v) for k, v in self.inputs.items()] + [("result", k, v) for k, v in self.results.items()]
+        return [(kind, name, _shown(value)) for kind, name, value in rows]
+
     def _repr_markdown_(self) -> str:
         """How a notebook shows the example: where it is, what goes in, what the notes state, what they got wrong."""
         lines = [f"**Notes §{self.section}**: {self.summary}", ""]
-        rows = [("input", k, v) for k, v in self.inputs.items()] + [("result", k, v) for k, v in self.results.items()]
+        rows = self._rows()
         if rows:
             lines += ["| | name | value |", "|---|---|---|"]
-            lines += [f"| {kind} | `{name}` | `{_shown(value)}` |" for kind, name, value in rows]
+            lines += [f"| {kind} | `{name}` | `{value}` |" for kind, name, value in rows]
         for name, erratum in self.errata.items():
             lines += ["", f"*Erratum* `{name}`: the notes print `{_shown(erratum.notes)}`, "
                           f"the correct value is `{_shown(erratum.correct)}` ({erratum.why})."]
         return "\n".join(lines)
 
+    def _repr_html_(self) -> str:
+        """The same as an HTML table: it renders alike in JupyterLab, the book and its PDF."""
+        parts = [f"<p><strong>Notes §{escape(self.section)}</strong>: {escape(self.summary)}</p>"]
+        rows = self._rows()
+        if rows:
+            body = "".join(
+                f"<tr><td>{kind}</td><td><code>{escape(name)}</code></td><td><code>{escape(value)}</code></td></tr>"
+                for kind, name, value in rows
+            )
+            parts.append(
+                '<table class="cagd-example"><thead><tr><th></th><th>name</th><th>value</th></tr></thead>'
+                f"<tbody>{body}</tbody></table>"
+            )
+        for name, erratum in self.errata.items():
+            parts.append(
+                f"<p><em>Erratum</em> <code>{escape(name)}</code>: the notes print "
+                f"<code>{escape(_shown(erratum.notes))}</code>, the correct value is "
+                f"<code>{escape(_shown(erratum.correct))}</code> ({escape(erratum.why)}).</p>"
+            )
+        return "\n".join(parts)
+
 
 def _shown(value) -> str:
-    """A value on one line: arrays and numbers to six digits, lists (ragged tables) item by item."""
+    """A value on one line: numbers to the six significant digits that matter (whole numbers without a
+    decimal point, rounding noise below 1e-12 as 0), arrays and lists (ragged tables) item by item."""
     if isinstance(value, np.ndarray):
-        return np.array2string(value, precision=6, suppress_small=True, separator=", ").replace("\n", " ")
+        return _shown(value.tolist()) if value.ndim else _shown(value.item())
+    if isinstance(value, float):
+        return f"{0.0 if abs(value) < 1e-12 else value:.6g}"
     if isinstance(value, list):
         return "[" + ", ".join(_shown(item) for item in value) + "]"
-    return f"{value:.6g}" if isinstance(value, float) else str(value)
+    return str(value)
 
 
 def _arithmetic(node):

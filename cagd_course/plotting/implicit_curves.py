@@ -70,8 +70,9 @@ def plot_intersection_polynomial(ax, coeffs, roots=(), **style) -> Axes:
     """g(u) = Σ g_i B_i^N(u) on [0, 1] with its Bernstein control polygon and the roots marked. Notes §17.8, §9.
 
     The coefficients are divided by their largest magnitude (a degree-9
-    polynomial's may be near 10⁸), and the panel is framed on the graph: its
-    Bernstein polygon may be much larger and run off it.
+    polynomial's may be near 10⁸). The polygon can dwarf the graph (cancellation),
+    so the value axis is signed-logarithmic (linear near 0): graph and polygon
+    both stay on the panel and every sign change of either can be seen.
     """
     check_axes(ax)
     g = as_float_array(coeffs, "coeffs")
@@ -84,12 +85,14 @@ def plot_intersection_polynomial(ax, coeffs, roots=(), **style) -> Axes:
     ax.plot(us, values, **{"color": "C2", "linewidth": 2.0, "label": "g(u) / max |gᵢ|", **style})
     roots = np.asarray(roots, dtype=float)
     if roots.size:
-        ax.plot(roots, np.zeros_like(roots), "o", color="C3", markersize=6, label="roots in [0, 1]")
+        ax.plot(roots, np.zeros_like(roots), "o", color="C3", markersize=5, label="roots in [0, 1]")
     ax.set_xlim(0, 1)
-    # The polygon can dwarf the curve (cancellation): frame the curve and let the polygon leave the panel.
-    reach = 1.5 * np.abs(values).max()
+    # Linear within a small band around 0 (where the graph crosses), logarithmic beyond it.
+    reach = np.abs(values).max()
     if reach > 0:
-        ax.set_ylim(-reach, reach)
+        band = reach / 30
+        ax.set_yscale("symlog", linthresh=band, linscale=0.6)
+        ax.set_ylim(-1.6, 1.6)
     ax.set_xlabel("u")
     return ax
 

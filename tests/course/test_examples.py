@@ -54,3 +54,13 @@ def test_notebooks_show_an_example_as_a_table():
     text = examples.notes_example("01.rotation")._repr_markdown_()
     assert text.startswith("**Notes §1.3**")
     assert "| input | `angle` | `1.5708` |" in text
+
+
+def test_notebooks_show_an_example_as_an_html_table_that_renders_everywhere():
+    html = examples.notes_example("01.rotation")._repr_html_()
+    assert html.startswith("<p><strong>Notes §1.3</strong>")
+    assert '<table class="cagd-example">' in html and html.count("<tr>") == 1 + 9
+    # the digits that matter: whole numbers without a decimal point, others to six significant digits
+    assert "<td><code>angle</code></td><td><code>1.5708</code></td>" in html
+    assert "<code>[5, 3, 5]</code>" in html and "<code>[1.66667, 4.33333, 7.66667]</code>" in html
+    assert "|" not in html
