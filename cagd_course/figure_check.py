@@ -179,11 +179,16 @@ def install(shell, report: Path | str) -> None:
 
 
 STARTUP = """\
+# Written by cagd_course.figure_check: check every figure this kernel displays.
 import os
 
-from cagd_course.figure_check import REPORT_ENV, install
-
-install(get_ipython(), os.environ[REPORT_ENV])
+try:
+    from cagd_course.figure_check import REPORT_ENV, install
+except ImportError:  # a kernel that cannot see the course (e.g. a confined grader) draws unchecked
+    pass
+else:
+    if os.environ.get(REPORT_ENV):
+        install(get_ipython(), os.environ[REPORT_ENV])
 """
 
 

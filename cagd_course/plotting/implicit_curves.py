@@ -6,6 +6,7 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.axes import Axes
 from matplotlib.colors import ListedColormap
+from matplotlib.ticker import FuncFormatter, NullLocator
 from numpy.polynomial import polynomial as P
 
 from cagd_ref import bezier
@@ -93,6 +94,10 @@ def plot_intersection_polynomial(ax, coeffs, roots=(), **style) -> Axes:
         band = reach / 30
         ax.set_yscale("symlog", linthresh=band, linscale=0.6)
         ax.set_ylim(-1.6, 1.6)
+        ticks = [-1.0, -0.1, -0.01, 0.0, 0.01, 0.1, 1.0]
+        ax.set_yticks([v for v in ticks if v == 0 or abs(v) > 3 * band], minor=False)
+        ax.yaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))
+        ax.yaxis.set_minor_locator(NullLocator())
     ax.set_xlabel("u")
     return ax
 

@@ -150,3 +150,93 @@ def test_the_pdf_prints_the_pages_with_their_math_and_the_figures_first_frame(bu
     assert re.search(r"P\(0\.50\) = \(", text) and "precomputed frames" not in text
     # MathJax typeset the formulas before printing: no TeX source is left in the text.
     assert "\\frac" not in text and "$$" not in text
+
+
+# ---------------------------------------------------------------- the reading form, on every chapter page
+
+# Lines a reader sees on a page: visible code (cell inputs and code blocks in the prose; outputs excluded) against
+# prose, headings and displayed math, each counted as rendered lines (height / line height).
+READING_LINES = """() => {
+  const article = document.querySelector("article") || document.querySelector("main");
+  const shown = (el) => el.checkVisibility() && !el.closest(".cell_output");
+  const rendered = (el) => {
+    const style = getComputedStyle(el);
+    const line = parseFloat(style.lineHeight) || 1.5 * parseFloat(style.fontSize);
+    return Math.max(1, Math.round(el.getBoundingClientRect().height / line));
+  };
+  let code = 0, prose = 0;
+  for (const pre of article.querySelectorAll("pre")) {
+    if (shown(pre)) code += pre.innerText.replace(/\\n+$/, "").split("\\n").length;
+  }
+  const blocks = "p, h1, h2, h3, h4, h5, dt, li:not(:has(p)), mjx-container[display='true']";
+  for (const el of article.querySelectorAll(blocks)) {
+    if (shown(el) && !el.closest("pre") && !el.closest("li:has(p) > p ~ *")) prose += rendered(el);
+  }
+  return {code, prose};
+}"""
+
+# Every code block (folded ones opened first) that is wider than its box and would be cut off.
+OVERFLOWING_CODE = """() => {
+  const article = document.querySelector("article") || document.querySelector("main");
+  for (const details of article.querySelectorAll("details")) details.open = true;
+  const wide = [...article.querySelectorAll("div.cell_input pre, div.highlight pre")]
+    .filter((pre) => !pre.closest(".cell_output") && pre.checkVisibility() && pre.scrollWidth > pre.clientWidth + 1)
+    .map((pre) => pre.innerText.split("\\n").find((line) => line.length > 88) || pre.innerText.slice(0, 60));
+  for (const details of article.querySelectorAll("details")) details.open = false;
+  return wide;
+}"""
+
+# Markdown tables that were printed as text instead of rendered: "| a | b |" rows outside code.
+RAW_TABLES = """() => {
+  const article = document.querySelector("article") || document.querySelector("main");
+  const walker = document.createTreeWalker(article, NodeFilter.SHOW_TEXT);
+  const found = [];
+  while (walker.nextNode()) {
+    const node = walker.currentNode;
+    if (node.parentElement.closest("pre, code, script, style")) continue;
+    if (/\\|\\s*(-{3,}|\u2014+)\\s*\\|/.test(node.textContent)) found.push(node.textContent.trim().slice(0, 80));
+  }
+  return found;
+}"""
+
+MAX_VISIBLE_CODE = 0.25
+
+
+def test_every_chapter_page_reads_as_a_textbook(book, page, artefacts):
+    """Visible code at most a quarter of the lines, no code block cut off, no table left as raw text."""
+    rows, problems = [], []
+    for chapter in COURSE.chapters:
+        _open(page, book, _doc(chapter.notebook))
+        lines = page.evaluate(READING_LINES)
+        share = lines["code"] / max(1, lines["code"] + lines["prose"])
+        wide, raw = page.evaluate(OVERFLOWING_CODE), page.evaluate(RAW_TABLES)
+        rows.append(f"{chapter.number:>2} {share:6.1%}  code {lines['code']:>4}  prose {lines['prose']:>5}  "
+                    f"wide code blocks {len(wide):>2}  raw tables {len(raw):>2}")
+        if share > MAX_VISIBLE_CODE:
+            problems.append(f"chapter {chapter.number}: visible code is {share:.0%} of the page's lines")
+        problems += [f"chapter {chapter.number}: code block wider than its box: {line!r}" for line in wide]
+        problems += [f"chapter {chapter.number}: table shown as raw text: {text!r}" for text in raw]
+    report = "chapter  visible code share (target <= 25 %)\n" + "\n".join(rows)
+    (artefacts / "reading-form.txt").write_text(report + "\n", encoding="utf-8")
+    print(report)
+    assert not problems, "\n".join(problems) + "\n\n" + report
+
+
+def test_every_static_slider_of_every_chapter_shows_another_frame(book, page):
+    dead = []
+    for chapter in COURSE.chapters:
+        _open(page, book, _doc(chapter.notebook))
+        figures = page.locator(".cagd-static-explorer")
+        for index in range(figures.count()):
+            figure = figures.nth(index)
+            slider = figure.locator("input[type=range]")
+            if slider.count() == 0:
+                continue  # a still picture (an explorer without a slider to sweep)
+            figure.scroll_into_view_if_needed()
+            image = figure.locator("img.cagd-sx-frame")
+            before = image.get_attribute("src")
+            slider.focus()
+            page.keyboard.press("End" if slider.input_value() != slider.get_attribute("max") else "Home")
+            if image.get_attribute("src") == before:
+                dead.append(f"chapter {chapter.number}, explorer {index + 1}")
+    assert dead == []

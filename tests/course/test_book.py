@@ -232,3 +232,54 @@ def test_sweeps_cover_each_kind_of_control():
     assert _sweep(ipywidgets.FloatLogSlider(value=10, min=0, max=2), 3) == [1.0, 10.0, 100.0]
     assert _sweep(ipywidgets.Dropdown(options=[("one", 1), ("two", 2)], value=1), 5) == [1, 2]
     assert _sweep(ipywidgets.Checkbox(value=True), 5) == [False, True]
+
+
+# ---------------------------------------------------------------- the reading form: roles and figures
+
+
+def _role_cell(source: str, role: str):
+    cell = new_code_cell(source, metadata={"tags": [role]})
+    if role not in ("compute", "explorer"):
+        cell.metadata["jupyter"] = {"source_hidden": True}
+    return cell
+
+
+def test_roles_remove_setup_fold_checks_figures_and_reference_code_and_agg_draws_inline(tmp_path, monkeypatch):
+    root = _course(tmp_path)
+    _write(
+        root / "chapters" / "02-second.ipynb",
+        new_markdown_cell("# Chapter 2 — Second steps\n\nCells with roles."),
+        _role_cell(
+            "import matplotlib.pyplot as plt\n\nfrom cagd_course.notebook import show_source, verified\n"
+            "from cagd_ref.bezier import bernstein\n\nSCAFFOLDING = 1",
+            "setup",
+        ),
+        _role_cell("answer = 6 * 7\nanswer", "compute"),
+        _role_cell("assert answer == 42\nverified('the answer is 42')", "check"),
+        _role_cell("fig, ax = plt.subplots(figsize=(3, 2))\nax.plot([0, 1], [0, 1])\nplt.show()", "figure"),
+        _role_cell("display(show_source(bernstein))", "reference-source"),
+    )
+    # A server's environment: without the build's pinning, plt.show() would draw nothing.
+    monkeypatch.setenv("MPLBACKEND", "Agg")
+    pages = _build(root, monkeypatch)
+    assert not [p.error for p in pages if p.error]
+    page = _html(root / "out", "chapters/02-second.html")
+    assert "SCAFFOLDING" not in page
+    assert "\N{CHECK MARK} the answer is 42" in page
+    assert "Show the check" in page and "Show the code of this figure" in page
+    assert "Reference implementation of bernstein: try the exercise first" in page
+    assert re.search(r'<img alt="_images/[^"]+\.png"|<img[^>]+\.png', page.split("Show the code of this figure")[1])
+    # The notebook itself is unchanged: the roles are tags, the book's tags are added to the staged copy only.
+    tags = [c.metadata.get("tags") for c in nbformat.read(root / "chapters" / "02-second.ipynb", 4).cells[1:]]
+    assert tags == [["setup"], ["compute"], ["check"], ["figure"], ["reference-source"]]
+
+
+def test_an_execution_whose_figure_cells_drew_nothing_is_run_again():
+    from cagd_course.book.build import _drew_no_figure
+
+    figure = _role_cell("plt.plot([0, 1])\nplt.show()", "figure")
+    notebook = new_notebook(cells=[figure])
+    assert _drew_no_figure(notebook)
+    figure.outputs = [nbformat.v4.new_output("display_data", data={"image/png": "iVBORw0KGgo="})]
+    assert not _drew_no_figure(notebook)
+    assert not _drew_no_figure(new_notebook(cells=[_role_cell("x = 1", "compute")]))
