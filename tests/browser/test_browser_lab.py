@@ -19,6 +19,7 @@ import time
 import urllib.request
 from pathlib import Path
 
+import nbformat
 import numpy as np
 import pytest
 
@@ -181,6 +182,14 @@ def test_chapter_2_runs_in_jupyterlab_and_its_explorers_respond(lab, browser, ar
         stderr = page.locator(".jp-OutputArea-output[data-mime-type='application/vnd.jupyter.stderr']")
         errors = [text for text in stderr.all_inner_texts() if "Error" in text or "Traceback" in text]
         assert errors == []
+
+        # The reading form: setup, check, figure and reference cells are collapsed to their first line, and the
+        # chapter's algorithm boxes, definitions and questions are rendered by jupyterlab-myst, not shown as source.
+        hidden = [c for c in nbformat.read(CHAPTER_2.notebook, as_version=4).cells if c.cell_type == "code"
+                  and c.metadata.get("jupyter", {}).get("source_hidden")]
+        expect(page.locator(".jp-InputPlaceholder")).to_have_count(len(hidden))
+        for kind in ("Algorithm", "Definition", "Theorem", "Exercise"):
+            expect(page.locator(f".jp-MarkdownCell a[title='Link to this {kind}']").first).to_be_attached()
 
         # The de Casteljau explorer: the keyboard moves its t slider, the figure and the readout follow.
         explorer = _cell(page, "de_casteljau_explorer(")
