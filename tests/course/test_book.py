@@ -248,7 +248,13 @@ def test_roles_remove_setup_fold_checks_figures_and_reference_code_and_agg_draws
     root = _course(tmp_path)
     _write(
         root / "chapters" / "02-second.ipynb",
-        new_markdown_cell("# Chapter 2 — Second steps\n\nCells with roles."),
+        new_markdown_cell(
+            "# Chapter 2 — Second steps\n\nCells with roles.\n\n"
+            "```{prf:algorithm} Doubling\n:label: ch02-alg-doubling\n\n**Input:** a number $x$.\n\n"
+            "1. Return $2x$.\n```\n\n"
+            "```{exercise}\n:label: ch02-q-double\n\nWhat is twice 21?\n```\n\n"
+            "```{solution} ch02-q-double\n:class: dropdown\n\nForty-two.\n```"
+        ),
         _role_cell(
             "import matplotlib.pyplot as plt\n\nfrom cagd_course.notebook import show_source, verified\n"
             "from cagd_ref.bezier import bernstein\n\nSCAFFOLDING = 1",
@@ -265,6 +271,10 @@ def test_roles_remove_setup_fold_checks_figures_and_reference_code_and_agg_draws
     assert not [p.error for p in pages if p.error]
     page = _html(root / "out", "chapters/02-second.html")
     assert "SCAFFOLDING" not in page
+    # The mathematical environments: an algorithm box, a question and its folded answer.
+    assert re.search(r'class="[^"]*\bproof\b[^"]*\balgorithm\b', page) and "Algorithm 1" in _text(page)
+    assert "Exercise 1" in _text(page) and re.search(r'class="[^"]*solution[^"]*dropdown', page)
+    assert "{prf:algorithm}" not in page and "{solution}" not in page
     assert "\N{CHECK MARK} the answer is 42" in page
     assert "Show the check" in page and "Show the code of this figure" in page
     assert "Reference implementation of bernstein: try the exercise first" in page
