@@ -175,12 +175,12 @@ READING_LINES = """() => {
   return {code, prose};
 }"""
 
-# Every code block (folded ones opened first) that is wider than its box and would be cut off.
+# Every code block (folded ones opened first; reference listings included) wider than its box: its end is cut off.
 OVERFLOWING_CODE = """() => {
   const article = document.querySelector("article") || document.querySelector("main");
   for (const details of article.querySelectorAll("details")) details.open = true;
   const wide = [...article.querySelectorAll("div.cell_input pre, div.highlight pre")]
-    .filter((pre) => !pre.closest(".cell_output") && pre.checkVisibility() && pre.scrollWidth > pre.clientWidth + 1)
+    .filter((pre) => pre.checkVisibility() && pre.scrollWidth > pre.clientWidth + 1)
     .map((pre) => pre.innerText.split("\\n").find((line) => line.length > 88) || pre.innerText.slice(0, 60));
   for (const details of article.querySelectorAll("details")) details.open = false;
   return wide;
