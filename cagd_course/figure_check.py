@@ -4,13 +4,13 @@
 labels, tick labels, annotations, legend entries) and returns one readable sentence per problem:
 
 - two text elements overlap (by more than `TOLERANCE_PX` each way);
-- a text element leaves the figure's canvas;
+- a text element is cut off: clipped by its box, or (for explorers, drawn on a fixed canvas) beyond the canvas;
 - two or more labelled series share an axes and no legend shows them;
 - a text is smaller than `MIN_POINTS` at the size the book shows the figure: a figure wider than the book's
   column (`BOOK_COLUMN_PX`) is scaled down to it, and its text with it.
 
 `install(shell, report)` makes a running IPython kernel check every figure it displays and append the findings,
-with the cell's execution count, as JSON lines to `report`; the notebook tests (the root `conftest.py`) turn
+with the cell that drew them, as JSON lines to `report`; the notebook tests (the root `conftest.py`) turn
 them into a failure of the cell that drew the figure.
 """
 
@@ -21,8 +21,17 @@ from pathlib import Path
 
 from matplotlib.figure import Figure
 from matplotlib.text import Text
+from matplotlib.transforms import Bbox
 
-__all__ = ["figure_findings", "install", "check_notebook", "checking_environment", "BOOK_COLUMN_PX", "MIN_POINTS"]
+__all__ = [
+    "figure_findings",
+    "report_findings",
+    "install",
+    "check_notebook",
+    "checking_environment",
+    "BOOK_COLUMN_PX",
+    "MIN_POINTS",
+]
 
 # Width of a figure's output in the book's column (sphinx-book-theme, 1280-px window), in CSS pixels.
 BOOK_COLUMN_PX = 688
@@ -41,12 +50,13 @@ def _drawn_texts(fig: Figure) -> list[tuple[Text, object]]:
 
         canvas = FigureCanvasAgg(fig)
     renderer = canvas.get_renderer()
-    drawn: list[Text] = []
+    drawn: dict[Text, object] = {}
     original = renderer.draw_text
 
     def record(gc, x, y, s, prop, angle, ismath=False, mtext=None):
-        if mtext is not None and str(s).strip():
-            drawn.append(mtext)
+        # The extent is taken while the text is drawn: a 3-D text (Text3D) has its projected position only then.
+        if mtext is not None and str(s).strip() and mtext not in drawn:
+            drawn[mtext] = mtext.get_window_extent(renderer)
         return original(gc, x, y, s, prop, angle, ismath=ismath, mtext=mtext)
 
     renderer.draw_text = record
@@ -54,8 +64,7 @@ def _drawn_texts(fig: Figure) -> list[tuple[Text, object]]:
         fig.draw(renderer)
     finally:
         del renderer.draw_text
-    unique = list(dict.fromkeys(drawn))
-    return [(text, text.get_window_extent(renderer)) for text in unique]
+    return list(drawn.items())
 
 
 def _label(text: Text) -> str:
@@ -85,14 +94,29 @@ def _overlaps(texts, fig: Figure) -> list[str]:
     return findings
 
 
-def _off_canvas(texts, fig: Figure) -> list[str]:
+def _off_canvas(texts, fig: Figure, tight: bool) -> list[str]:
+    """Texts cut off: beyond the canvas (unless the figure is shown cropped to its contents), or beyond the box
+    they are clipped to."""
     width, height = fig.canvas.get_width_height()
+    canvas = Bbox.from_bounds(0, 0, width, height)
     findings = []
     for text, box in texts:
-        outside = min(box.x0, box.y0) < -TOLERANCE_PX or box.x1 > width + TOLERANCE_PX or box.y1 > height + TOLERANCE_PX
-        if outside:
-            findings.append(f"text {_label(text)} leaves the canvas in {_where(text, fig)}")
+        clip = text.get_clip_box() if text.get_clip_on() else None
+        limits = [clip] if clip is not None else []
+        if not tight:
+            limits.append(canvas)
+        if any(_beyond(box, limit) for limit in limits):
+            findings.append(f"text {_label(text)} is cut off in {_where(text, fig)}")
     return findings
+
+
+def _beyond(box, limit) -> bool:
+    return (
+        box.x0 < limit.x0 - TOLERANCE_PX
+        or box.y0 < limit.y0 - TOLERANCE_PX
+        or box.x1 > limit.x1 + TOLERANCE_PX
+        or box.y1 > limit.y1 + TOLERANCE_PX
+    )
 
 
 def _shown_scale(fig: Figure) -> float:
@@ -104,9 +128,8 @@ def _shown_scale(fig: Figure) -> float:
 def _tiny(texts, fig: Figure) -> list[str]:
     """One finding per figure: how many texts are shown below MIN_POINTS, the smallest first."""
     scale = _shown_scale(fig)
-    small = sorted(
-        (text.get_fontsize() * scale, text) for text, _box in texts if text.get_fontsize() * scale < MIN_POINTS - 1e-9
-    )
+    sizes = [(text.get_fontsize() * scale, text) for text, _box in texts]
+    small = sorted(((shown, text) for shown, text in sizes if shown < MIN_POINTS - 1e-9), key=lambda item: item[0])
     if not small:
         return []
     examples = ", ".join(f"{_label(text)} {shown:.1f} pt" for shown, text in small[:3])
@@ -132,27 +155,49 @@ def _unexplained_series(fig: Figure) -> list[str]:
     return findings
 
 
-def figure_findings(fig: Figure) -> list[str]:
-    """One sentence per legibility problem of `fig` (empty: legible). Draws the figure once."""
+def figure_findings(fig: Figure, tight: bool = True) -> list[str]:
+    """One sentence per legibility problem of `fig` (empty: legible). Draws the figure once.
+
+    `tight`: the figure is shown cropped to what it draws, as the inline backend shows it (see `report_findings`).
+    """
     texts = _drawn_texts(fig)
-    return _overlaps(texts, fig) + _off_canvas(texts, fig) + _unexplained_series(fig) + _tiny(texts, fig)
+    return _overlaps(texts, fig) + _off_canvas(texts, fig, tight) + _unexplained_series(fig) + _tiny(texts, fig)
+
+
+# Where a kernel with the check installed writes its findings, and which cell is running.
+_session: dict = {"report": None, "cell": None}
+
+
+def report_findings(fig: Figure, tight: bool = True) -> None:
+    """Check `fig` and append its findings to the kernel's report; nothing when the check is not installed.
+
+    `tight`: the figure is shown cropped to what it draws (the inline backend's `bbox_inches="tight"`), so only
+    clipped text is cut off; explorers draw onto their whole canvas (`tight=False`), where text beyond it is lost.
+    """
+    if _session["report"] is None:
+        return
+    findings = figure_findings(fig, tight=tight)
+    if findings:
+        with Path(_session["report"]).open("a", encoding="utf-8") as out:
+            out.write(json.dumps({"cell": _session["cell"], "findings": findings}) + "\n")
 
 
 def install(shell, report: Path | str) -> None:
-    """Check every figure `shell` (an IPython shell) displays as PNG; append findings to the file `report`.
+    """Check every figure `shell` (an IPython shell) displays; append findings to the file `report`.
 
-    Each line is JSON: {"cell": <the cell's id, or its first line>, "findings": [...]}. The PNG itself is
-    made as before. The inline backend registers its PNG formatter only when pyplot is first imported,
-    so the check wraps whatever formatter is registered before each cell runs.
+    Each line is JSON: {"cell": <the cell's id, or its first line>, "findings": [...]}. Figures shown by the
+    inline backend are checked as they are turned into PNG (which is made as before); explorers check theirs
+    when they are displayed (`cagd_course.widgets`).
     """
-    path = Path(report)
-    current = {"cell": None}
+    _session["report"] = Path(report)
 
-    def wrap(info=None):
+    def note_cell(info=None):
         # Which cell runs: its id (nbclient and nbval send it), else its first line.
         cell_id = getattr(info, "cell_id", None)
         first = (getattr(info, "raw_cell", "") or "").strip().splitlines()[:1]
-        current["cell"] = cell_id or (first[0] if first else None)
+        _session["cell"] = cell_id or (first[0] if first else None)
+
+    def wrap(*_args):
         formatter = shell.display_formatter.formatters["image/png"]
         try:
             original = formatter.lookup_by_type(Figure)
@@ -162,17 +207,20 @@ def install(shell, report: Path | str) -> None:
             return
 
         def checked_png(fig):
-            findings = figure_findings(fig)
-            if findings:
-                record = {"cell": current["cell"], "findings": findings}
-                with path.open("a", encoding="utf-8") as out:
-                    out.write(json.dumps(record) + "\n")
+            report_findings(fig, tight=True)
             return original(fig)
 
         checked_png.cagd_checked = True
         formatter.for_type(Figure, checked_png)
 
+    # The inline backend now, so that its formatter exists before the first figure (a cell that makes the first
+    # figure and shows it would otherwise escape); again before each cell and each flush, in case a cell
+    # registered the formatter anew (`%matplotlib inline`). Registered first, this runs before the flush.
+    shell.run_line_magic("matplotlib", "inline")
+    wrap()
+    shell.events.register("pre_run_cell", note_cell)
     shell.events.register("pre_run_cell", wrap)
+    shell.events.register("post_execute", wrap)
 
 
 # ---------------------------------------------------------------- running notebooks with the check

@@ -34,6 +34,7 @@ from traitlets import TraitError
 
 from cagd_ref._validation import as_points
 
+from ..figure_check import report_findings
 from . import _static
 
 __all__ = ["Explorer"]
@@ -154,6 +155,8 @@ class Explorer:
         bundle = self.widget._repr_mimebundle_(**kwargs)
         bundle = dict(bundle[0] if isinstance(bundle, tuple) else bundle)
         bundle["image/png"] = self.png()
+        # Under the notebook tests, the explorer's figure is checked for legibility like every other figure.
+        report_findings(self.figure, tight=False)
         frames = _static.frame_count()
         if frames:
             bundle["text/html"] = self.static_html(frames)
