@@ -83,6 +83,9 @@ class DeCasteljauExplorer(Explorer):
         ax.plot(*state["left"].T, color="C4", linewidth=3, alpha=0.35)
         ax.plot(*state["right"].T, color="C5", linewidth=3, alpha=0.35)
         ax.set_title(f"de Casteljau's algorithm at t = {t:.2f}")
+        # The colour key is in the readout (see describe), so the series carry no legend labels.
+        for line in ax.lines:
+            line.set_label("_" + line.get_label().lstrip("_"))
 
     def describe(self, state: dict) -> str:
         # The colour key lives here rather than in a legend: drawing legend text
@@ -238,11 +241,11 @@ class RationalWeightExplorer(Explorer):
         for w, curve in state["family"].items():
             ax.plot(*curve.T, color="0.6", linewidth=1)
             near = curve[np.nanargmin(np.hypot(*(curve - target).T))]
-            ax.annotate(f"{w:g}", near, fontsize=7, color="0.35", xytext=(3, -9), textcoords="offset points")
+            ax.annotate(f"{w:g}", near, fontsize=8, color="0.35", xytext=(3, -9), textcoords="offset points")
         name = f"$w_{{{self.index}}}$"
         plot_bezier(ax, self.points, state["weights"], color="C3", label=f"{name} = {state['weight']:.3g}")
         family = ", ".join(f"{w:g}" for w in FAMILY_WEIGHTS)
-        ax.set_title(f"Changing weight {name} (grey: {name} = {family})", fontsize=9)
+        ax.set_title(f"Changing weight {name}\n(grey: {name} = {family})", fontsize=9, pad=14)
         ax.legend(fontsize=8, loc="lower center")
 
     def describe(self, state: dict) -> str:
@@ -352,7 +355,7 @@ class SubdivisionExplorer(Explorer):
             ax.plot(*polygon.T, "o-", color=("C0", "C3")[k % 2], markersize=2.5, linewidth=1)
         count = len(state["polygons"])
         ax.set_title(f"Subdivision depth {state['depth']}: {count} polygon{'s' * (count > 1)}, "
-                     f"max vertex distance {state['distance']:.3g}", fontsize=10)
+                     f"max vertex distance {state['distance']:.3g}", fontsize=10, pad=14)
         ax.legend(fontsize=8, loc="lower center")
 
     def describe(self, state: dict) -> str:
