@@ -216,9 +216,14 @@ def plot_v_rule(ax, values, end: str = "left", color: str = "C3") -> Axes:
         span = ends[np.argsort(ends[:, 0])][[0, -1]]
         ax.plot(*span.T, color=color, linewidth=0.9, alpha=0.7)
         ax.plot(v, 0.0, "v", color=color, markersize=6)
-        # Alternate the labels above and below the axis: neighbouring meets are often close.
-        ax.annotate(f"$V_{{{i}}}$={v:.4g}", (v, 0.0), xytext=(0, 7 if k % 2 else -13), textcoords="offset points",
-                    fontsize=8, ha="center", color=color)
+        # The labels sit in three staggered rows along the bottom of the panel, joined to their meets by thin
+        # leaders: next to the axis they would collide with each other and with the E_i labels.
+        # (The leader is an annotation of its own, so that the label's extent is the text alone.)
+        row = (v, 0.03 + 0.08 * (k % 3))
+        ax.annotate("", (v, 0.0), xytext=row, textcoords=("data", "axes fraction"),
+                    arrowprops=dict(arrowstyle="-", color=color, linewidth=0.5, alpha=0.6, shrinkA=10, shrinkB=3))
+        ax.annotate(f"$V_{{{i}}}$={v:.4g}", row, xycoords=("data", "axes fraction"), fontsize=8, ha="center",
+                    va="bottom", color=color)
     ax.set_xlabel("t")
     return ax
 

@@ -239,15 +239,26 @@ class ClipLabExplorer(Explorer):
 
     def draw(self, ax, state: dict) -> None:
         plot_explicit_clip(ax, state["values"], state["dmin"], state["dmax"], kept=state["hull"])
-        for key, style, color in (("polygon", "--", "C3"), ("v_rule", ":", "C4")):
-            if state[key] is not None:
-                for v in state[key]:
-                    ax.axvline(v, linestyle=style, color=color, linewidth=1.6)
+        # The three clips, labelled for the legend. The V rule's range often coincides with the hull's, so it is
+        # drawn as a bar along the bottom of the panel, where it stays visible beside the hull's lines.
+        if state["hull"] is not None:
+            ax.plot([], [], color="C2", linewidth=1.4, label="hull clip (exact)")
+        if state["polygon"] is not None:
+            for k, v in enumerate(state["polygon"]):
+                ax.axvline(v, linestyle="--", color="C3", linewidth=1.6,
+                           label="polygon clip (unsafe)" if k == 0 else None)
+        if state["v_rule"] is not None:
+            ax.plot(state["v_rule"], [0.04, 0.04], transform=ax.get_xaxis_transform(), color="C4", linewidth=3,
+                    marker="|", markersize=14, markeredgewidth=2.5, label="V rule clip")
         if len(state["lost"]):
-            ax.plot(state["lost"], bernstein_horner(state["values"], state["lost"]), ".", color="C3", markersize=4)
+            ax.plot(state["lost"], bernstein_horner(state["values"], state["lost"]), ".", color="C3", markersize=4,
+                    label="cut away by the polygon")
+        handles, labels = ax.get_legend_handles_labels()
+        keep = [k for k, name in enumerate(labels) if not name.startswith("control points")]
+        ax.legend([handles[k] for k in keep], [labels[k] for k in keep], fontsize=8, loc="upper left",
+                  framealpha=0.9)
         verdict = "the polygon clip is UNSAFE" if len(state["lost"]) else "all three clips are safe"
-        ax.set_title(f"clipping the explicit curve to [{state['dmin']:.2g}, {state['dmax']:.2g}]: {verdict}",
-                     fontsize=9)
+        ax.set_title(f"band [{state['dmin']:.2g}, {state['dmax']:.2g}]: {verdict}", fontsize=9)
 
     def describe(self, state: dict) -> str:
         def show(clip):

@@ -182,6 +182,8 @@ class InterpolationExplorer(TwoPanels, ControlPointEditor, _ExtraControls):
         ax.set_title(f"{action}: the cubic through them" if self.degree == 3 else action, fontsize=10)
         lower = self.lower_axes()
         plot_lagrange_basis(lower, state["ts"], interval=(0.0, 1.0), highlight=state["highlight"])
+        if len(lower.get_legend_handles_labels()[1]) >= 2:
+            lower.legend(fontsize=8, loc="upper center", ncol=min(len(state["ts"]), 6))
         lower.set_xlabel("t: the Lagrange basis functions and the nodes", fontsize=8)
 
     def describe(self, state: dict) -> str:
