@@ -201,7 +201,8 @@ def plot_isoline_construction(ax, lattice, value: float, direction: str = "s", w
         ax.plot(*evaluate(grid[:, j], u, w[:, j]).T, color="C2", linewidth=1.2, label=label)
     points, curve_weights = isoline_image(lattice, value, direction, weights)
     for j, point in enumerate(points):
-        ax.annotate(f"${name}_{j}({value:g})$", point, xytext=(5, -12), textcoords="offset points", fontsize=8)
+        ax.annotate(f"${name}_{j}({value:g})$", point, xytext=(6, -4), textcoords="offset points", fontsize=8,
+                    ha="left", va="top")
     ax.plot(*points.T, "s--", color="C1", markersize=6, linewidth=1, label="their points: control polygon")
     ax.plot(*evaluate(points, u, curve_weights).T, color="C1", linewidth=2.4,
             label=f"image of {direction} = {value:g} (degree {len(points) - 1})")

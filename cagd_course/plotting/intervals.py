@@ -125,6 +125,8 @@ def plot_interval_band(ax, coeffs, interval=(0.0, 1.0), samples: int = 300, f=No
     ax.plot(t, band[:, 0] - shift, color=color, linewidth=1.0)
     ax.plot(t, band[:, 1] - shift, color=color, linewidth=1.0)
     if f is not None:
-        ax.plot(t, f(t) - shift, color="black", linewidth=1.4, label="f(t)")
+        # Relative to f the function itself is the zero line: say so in its label.
+        name = "f(t)" if relative_to is None else "f(t) itself (at 0)"
+        ax.plot(t, f(t) - shift, color="black", linewidth=1.4, label=name)
     ax.set_xlabel("t")
     return ax

@@ -296,7 +296,7 @@ class IsolineExplorer(Explorer):
         name = "row curves H_j(s)" if state["direction"] == "s" else "column curves V_i(t)"
         ax.set_title(f"{state['direction']} = {state['value']:.2f} maps to a curve of degree {state['degree']}, "
                      f"controlled by points of the {name}", fontsize=9)
-        ax.legend(fontsize=7, loc="lower right")
+        ax.legend(fontsize=8, loc="lower right")
         _bare(ax, BOX, 0.35)
 
     def describe(self, state: dict) -> str:
@@ -390,7 +390,7 @@ class FreezeExplorer(TwoPanels, Explorer):
         ax.axhline(FREEZE_BOX[0, 1], color="C3", linewidth=0.8, linestyle=":")
         labels = {-1: "torn", 0: "C⁰: a kink", 1: "C¹: the curvature jumps", 2: "C²", 3: "C³ or better"}
         ax.set_title(f"freezing at the bottom edge: {labels[state['continuity']]}", fontsize=10)
-        ax.legend(fontsize=7, loc="lower right")
+        ax.legend(fontsize=8, loc="lower right")
         ax.set_xlim(-0.6, 3.6)
         ax.set_ylim(-1.0, 2.6)
         ax.set_aspect("equal", adjustable="box")
@@ -403,7 +403,7 @@ class FreezeExplorer(TwoPanels, Explorer):
         lower.set_xlabel("height above the bottom edge (before deforming)", fontsize=8)
         lower.set_ylabel("κ", fontsize=8)
         lower.set_ylim(-1.6, 1.6)
-        lower.legend(fontsize=7, loc="upper right")
+        lower.legend(fontsize=8, loc="upper right")
 
     def describe(self, state: dict) -> str:
         jumps = ", ".join(f"{j:.2g}" for j in state["jumps"])
@@ -501,7 +501,7 @@ class CurveImageExplorer(Explorer):
         ax.set_title(f"degree {state['degree']} in a ({len(state['lattice']) - 1}, "
                      f"{state['lattice'].shape[1] - 1}) lattice: the image has degree {state['image_degree']}",
                      fontsize=10)
-        ax.legend(fontsize=7, loc="lower right")
+        ax.legend(fontsize=8, loc="lower right")
         _bare(ax, BOX, 0.3)
 
     def describe(self, state: dict) -> str:
