@@ -98,8 +98,9 @@ class TwoPanels:
 
     def lower_axes(self):
         if getattr(self, "lower", None) is None:
-            self.ax.set_position([0.08, 0.40, 0.9, 0.52])
-            self.lower = self.figure.add_axes([0.08, 0.07, 0.9, 0.25])
+            # Room on both sides for the end tick labels: the explorer's PNG is the whole canvas, nothing beyond it.
+            self.ax.set_position([0.09, 0.40, 0.86, 0.52])
+            self.lower = self.figure.add_axes([0.09, 0.07, 0.86, 0.25])
         return self.lower
 
     def _clear(self) -> None:
