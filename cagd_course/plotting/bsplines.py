@@ -109,6 +109,24 @@ def _point_labels(labels, points: np.ndarray, knots, n: int):
     return labels
 
 
+def _knot_value_label(ax, text: str, where, tangent, polygon: np.ndarray) -> None:
+    """Write a knot value beside the curve, on the side away from the nearest control point.
+
+    The control points carry their own labels (up and to the right of each point), so a knot value
+    written on the far side of the curve from the nearest one does not cover them.
+    """
+    where = np.asarray(where, dtype=float)
+    tangent = np.asarray(tangent, dtype=float)
+    length = np.hypot(*tangent)
+    normal = np.array([-tangent[1], tangent[0]]) / length if length > 0 else np.array([0.0, -1.0])
+    nearest = polygon[np.argmin(np.linalg.norm(polygon - where, axis=1))]
+    if normal @ (where - nearest) < 0 or (normal @ (where - nearest) == 0 and normal[1] > 0):
+        normal = -normal
+    ha = "left" if normal[0] > 0.35 else "right" if normal[0] < -0.35 else "center"
+    va = "bottom" if normal[1] > 0.35 else "top" if normal[1] < -0.35 else "center"
+    ax.annotate(text, where, xytext=tuple(9 * normal), textcoords="offset points", fontsize=8, ha=ha, va=va)
+
+
 def plot_bspline(ax, points, knots, labels=True, knot_marks: bool = True, knot_values: bool = True,
                  bezier_polygons: bool = False, colors=SEGMENT_COLORS, polygon_legend: str | None = "control polygon",
                  **style):
@@ -130,10 +148,11 @@ def plot_bspline(ax, points, knots, labels=True, knot_marks: bool = True, knot_v
     if knot_marks:
         ax.plot(*np.vstack([samples[:, 0], samples[-1:, -1]]).T, "k|", markersize=9)
     if knot_marks and knot_values:
-        for span, curve in zip(intervals, samples):
-            ax.annotate(f"t={knot_label(span[0])}", curve[0], xytext=(3, -12), textcoords="offset points", fontsize=8)
-        ax.annotate(f"t={knot_label(intervals[-1, 1])}", samples[-1, -1], xytext=(3, -12), textcoords="offset points",
-                    fontsize=8)
+        places = [(span[0], curve[0], curve[1] - curve[0]) for span, curve in zip(intervals, samples)]
+        places.append((intervals[-1, 1], samples[-1, -1], samples[-1, -1] - samples[-1, -2]))
+        for value, where, tangent in places:
+            _knot_value_label(ax, f"t={knot_label(value)}", where, tangent, pts)
+    ax.margins(x=0.16, y=0.12)
     if bezier_polygons:
         for k, segment in enumerate(bezier_segments(pts, knots)):
             ax.plot(*segment.T, "s:", color=colors[k % len(colors)], markersize=3, linewidth=1, alpha=0.8)

@@ -214,13 +214,13 @@ class DeBoorExplorer(Explorer):
         # Only the span's points and the newest level are labelled: deeper levels crowd near the curve.
         for r in sorted({0, step}):
             for text, place in zip(state["labels"][r], state["levels"][r]):
-                ax.annotate(text, place, xytext=(3, 5 if r == 0 else -11), textcoords="offset points", fontsize=7)
+                ax.annotate(text, place, xytext=(3, 5 if r == 0 else -11), textcoords="offset points", fontsize=8)
         if step == self.degree:
             ax.plot(*state["point"], "k*", markersize=13, label=f"P({state['t']:.2f})")
         j = state["span"]
         span = f"[{knot_label(self.knots[j])}, {knot_label(self.knots[j + 1])}]"
         ax.set_title(f"de Boor at t = {state['t']:.2f}, span {span}", fontsize=10)
-        ax.legend(fontsize=7, loc="lower center", ncol=3)
+        ax.legend(fontsize=8, loc="lower center", ncol=3)
         bare_axes(ax)
 
     def describe(self, state: dict) -> str:
@@ -282,19 +282,20 @@ class KnotInsertionExplorer(Explorer):
         }
 
     def draw(self, ax, state: dict) -> None:
-        plot_bspline(ax, state["points"], state["knots"], labels=False, polygon_legend="new polygon", alpha=0.8)
+        plot_bspline(ax, state["points"], state["knots"], labels=False, knot_values=False, polygon_legend="new polygon",
+                     alpha=0.8)
         ax.plot(*self.points.T, "o--", color="0.55", markersize=5, linewidth=1, label="old polygon")
         new = state["points"][state["new"]]
         ax.plot(*new.T, "o", color="C3", markersize=8, markerfacecolor="white", markeredgewidth=2, label="new points")
         labels = control_point_labels(state["knots"], self.degree)
-        for i in state["new"]:
-            ax.annotate(labels[i], state["points"][i], xytext=(4, 5), textcoords="offset points", fontsize=7,
-                        color="C3")
+        for k, i in enumerate(state["new"]):  # alternate above and below: new points lie close together
+            ax.annotate(labels[i], state["points"][i], xytext=(4, 5) if k % 2 == 0 else (4, -13),
+                        textcoords="offset points", fontsize=8, color="C3")
         if state["point"] is not None:
             ax.plot(*state["point"], "k*", markersize=12, label=f"P({state['t']:.2f}) exposed")
         ax.set_title(f"inserting t = {state['t']:.2f} {state['inserted']}×; curve moved by {state['deviation']:.1e}",
                      fontsize=10)
-        ax.legend(fontsize=7, loc="lower center", ncol=2)
+        ax.legend(fontsize=8, loc="lower center", ncol=2)
         bare_axes(ax)
 
     def describe(self, state: dict) -> str:
@@ -394,7 +395,7 @@ class KnotIntervalExplorer(Explorer):
         d = self.intervals[state["index"]]
         ax.set_title(f"split $d_{state['index']}$ = {knot_label(d)} into {knot_label(state['fraction'] * d)} + "
                      f"{knot_label((1 - state['fraction']) * d)}", fontsize=10)
-        ax.legend(fontsize=7, loc="upper right")
+        ax.legend(fontsize=8, loc="upper right")
         bare_axes(ax)
 
     def describe(self, state: dict) -> str:
@@ -468,7 +469,7 @@ class LocalControlExplorer(Explorer):
         a, b = state["support"]
         ax.set_title(f"moving $P_{{{state['index']}}}$ changes {len(state['changed'])} of {len(self.segments)} "
                      f"segments, t in [{knot_label(a)}, {knot_label(b)}]", fontsize=10)
-        ax.legend(fontsize=7, loc="lower center", ncol=3)
+        ax.legend(fontsize=8, loc="lower center", ncol=3)
         bare_axes(ax)
 
     def describe(self, state: dict) -> str:
