@@ -105,31 +105,41 @@ def plot_pencil(ax, l0, l1, xlim, ylim, ts=None, cmap: str = "viridis", **style)
     return set_box(ax, xlim, ylim)
 
 
-def plot_parameter_line(ax, ends, ticks=None, **style) -> Axes:
-    """Draw a parameter line P0 -> P1 (ends (2, 2)) with evenly spaced ticks labelled by t. Notes §18.2.1, Fig. 18.3."""
+def plot_parameter_line(ax, ends, ticks=None, label: str | None = "parameter line", offset=(5, 4),
+                        **style) -> Axes:
+    """Draw a parameter line P0 -> P1 (ends (2, 2)) with evenly spaced ticks labelled by t. Notes §18.2.1, Fig. 18.3.
+
+    `offset` places the tick labels (points, from each mark); `label` names the line in a legend.
+    """
     check_axes(ax)
     ends = as_float_array(ends, "ends")
     if ends.shape != (2, 2):
         raise ValueError(f"ends: expected the two end points (2, 2), got shape {ends.shape}")
     ticks = np.linspace(0.0, 1.0, 5) if ticks is None else as_float_array(ticks, "ticks").ravel()
     options = {"color": "C2", "linewidth": 2.0, **style}
-    ax.plot(*ends.T, **options, label="parameter line")
+    ax.plot(*ends.T, **options, label=label)
     marks = (1 - ticks)[:, None] * ends[0] + ticks[:, None] * ends[1]
     ax.plot(*marks.T, "|" if abs(ends[1, 1] - ends[0, 1]) < abs(ends[1, 0] - ends[0, 0]) else "_",
             color=options["color"], markersize=9)
     for t, mark in zip(ticks, marks):
-        ax.annotate(f"{t:g}", mark, textcoords="offset points", xytext=(5, 4), fontsize=8, color=options["color"])
+        ax.annotate(f"{t:g}", mark, textcoords="offset points", xytext=tuple(offset), fontsize=8,
+                    color=options["color"])
     return ax
 
 
-def plot_points(ax, points, labels=None, **style) -> Axes:
-    """Mark homogeneous points (k, 3) (those at infinity are skipped), with optional labels. Notes §18.1."""
+def plot_points(ax, points, labels=None, offsets=None, **style) -> Axes:
+    """Mark homogeneous points (k, 3) (those at infinity are skipped), with optional labels. Notes §18.1.
+
+    `offsets`: one (dx, dy) in points per point, placing its label (default (6, 5) for all).
+    """
     check_axes(ax)
     array = as_float_array(points, "points").reshape(-1, 3)
     finite = np.abs(array[:, 2]) > 1e-12 * np.abs(array).max(axis=1, initial=0.0)
     xy = array[finite, :2] / array[finite, 2:]
     ax.plot(*xy.T, **{"color": "black", "marker": "o", "markersize": 5, "linestyle": "none", **style})
     if labels is not None:
-        for text, point in zip(np.asarray(labels, dtype=object)[finite], xy):
-            ax.annotate(str(text), point, textcoords="offset points", xytext=(6, 5), fontsize=9)
+        shifts = [(6, 5)] * len(array) if offsets is None else [tuple(o) for o in offsets]
+        kept = [shift for shift, keep in zip(shifts, finite) if keep]
+        for text, point, shift in zip(np.asarray(labels, dtype=object)[finite], xy, kept):
+            ax.annotate(str(text), point, textcoords="offset points", xytext=shift, fontsize=9)
     return ax

@@ -129,7 +129,7 @@ class ImplicitCurveExplorer(Explorer):
         ax.set_ylim(lo[1], hi[1])
         ax.set_aspect("equal", adjustable="box")
         ax.set_title("implicit cubic: f < 0 blue, f > 0 orange", fontsize=10)
-        ax.legend(fontsize=7, loc="upper left")
+        ax.legend(fontsize=8, loc="upper left")
 
     def describe(self, state: dict) -> str:
         lines = [f"f(probe) = {state['value']:.4g} (relative {state['relative_value']:.1e}: "
@@ -201,7 +201,7 @@ class CommonRootExplorer(Explorer):
         count = state["common_count"]
         ax.set_title(f"{count} common root{'s' if count != 1 else ''}: rank of the Bézout matrix {state['rank']}",
                      fontsize=10)
-        ax.legend(fontsize=7, loc="upper left")
+        ax.legend(fontsize=8, loc="upper left")
 
     def describe(self, state: dict) -> str:
         return (
@@ -258,13 +258,15 @@ class ImplicitIntersectionExplorer(TwoPanels, Explorer):
         plot_bezier(ax, state["q"], state["q_weights"], color="C1", linewidth=2, label="Q (substituted)")
         for k, point in enumerate(state["points"], start=1):
             ax.plot(*point, "o", color="C3", markersize=5)
-            ax.annotate(str(k), point, xytext=(3, 4), textcoords="offset points", fontsize=8)
+            # alternate above and below: neighbours along the curves may lie close together
+            ax.annotate(str(k), point, xytext=(3, 4) if k % 2 else (3, -11), textcoords="offset points",
+                        fontsize=8)
         ax.set_title(f"{len(state['hits'])} intersections with t, u in [0, 1]", fontsize=10)
-        ax.legend(fontsize=7, loc="upper left")
+        ax.legend(fontsize=8, loc="upper left")
         ax.set(xticks=[], yticks=[], xlabel="", ylabel="")
         lower = self.lower_axes()
         plot_intersection_polynomial(lower, state["polynomial"], state["u_roots"])
-        lower.legend(fontsize=7, loc="lower left")
+        lower.legend(fontsize=8, loc="lower left")
 
     def describe(self, state: dict) -> str:
         rows = "".join(f"<tr><td>{k}</td><td>{t:.4f}</td><td>{_fmt(p)}</td><td>{u:.4f}</td></tr>"

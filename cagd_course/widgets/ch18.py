@@ -101,7 +101,7 @@ class PencilExplorer(Explorer):
         plot_line(ax, state["line"], *box, color="C3", linewidth=2.2, label=f"L({state['t']:.2f})")
         ax.plot(*state["mark"], "o", color="C3", markersize=7)
         ax.plot(0.0, 0.0, **AXIS_STYLE, label="axis A")
-        ax.legend(fontsize=7, loc="lower left")
+        ax.legend(fontsize=8, loc="lower left")
         ax.set_title("a pencil passes through the marks of its parameter line", fontsize=10)
         bare_axes(ax)
 
@@ -186,10 +186,11 @@ class TwoPencilsExplorer(Explorer):
         plot_points(ax, state["ticks"], markersize=3, color="0.3")
         plot_points(ax, state["control"], labels=[f"P{k} (w = {w:.2g})" for k, w in enumerate(state["weights"])],
                     color="C1", markersize=7)
-        plot_points(ax, [state["pa"], state["pb"]], labels=["Pa", "Pb"], color="C4", marker="s", markersize=5)
+        plot_points(ax, [state["pa"], state["pb"]], labels=["Pa", "Pb"], offsets=[(6, 5), (6, -13)], color="C4",
+                    marker="s", markersize=5)
         plot_points(ax, [state["point"]], color="C3", markersize=9)
         set_box(ax, *box)
-        ax.legend(fontsize=7, loc="upper left")
+        ax.legend(fontsize=8, loc="upper left")
         ax.set_title(f"two pencils meet at P({state['t']:.2f}) on a conic", fontsize=10)
         bare_axes(ax)
 
@@ -289,7 +290,7 @@ class DoublePointExplorer(Explorer):
         if state["cartesian"] is not None:
             ax.plot(*state["cartesian"], **AXIS_STYLE, label="axis of the pencil = double point")
         set_box(ax, *box)
-        ax.legend(fontsize=7, loc="lower left")
+        ax.legend(fontsize=8, loc="lower left")
         ax.set_title(f"double point: {state['kind']}", fontsize=10)
 
     def describe(self, state: dict) -> str:
@@ -326,7 +327,7 @@ TANGENT_CURVES = {
 class TangentExplorer(Explorer):
     """A curve with its tangent moving line, and the reciprocal curve the tangents trace read as points. Notes §18.5."""
 
-    figsize = (9.0, 4.5)
+    figsize = (6.9, 3.6)
 
     def __init__(self, curve: str = "S-curve (inflection)", t: float = 0.3):
         controls = {
@@ -387,7 +388,7 @@ class TangentExplorer(Explorer):
         ax.plot(*state["point"], "o", color="C3", markersize=6)
         ax.plot(0.0, 0.0, "+", color="0.3", markersize=10)
         set_box(ax, *box)
-        ax.legend(fontsize=7, loc="lower left")
+        ax.legend(fontsize=8, loc="lower left")
         ax.set_title("tangent lines envelop the curve", fontsize=10)
         bare_axes(ax)
         dual = self.dual_axes()
@@ -398,7 +399,7 @@ class TangentExplorer(Explorer):
             dual.plot(*state["dual_point"], "o", color="C3", markersize=6)
         dual.plot(0.0, 0.0, "+", color="0.3", markersize=10)
         set_box(dual, *dual_box)
-        dual.legend(fontsize=7, loc="lower left")
+        dual.legend(fontsize=8, loc="lower left")
         dual.set_title("the dual picture: Line(A(t)) touches B at B(t)", fontsize=10)
         bare_axes(dual)
 

@@ -88,7 +88,7 @@ class DoublePointClassifier(Explorer):
         plot_curve(ax, state["c"], *box, label="x³ + k x² − 3y² = 0")
         plot_tangent_cone(ax, state["c"], (0.0, 0.0), *box)
         set_box(ax, *box)
-        ax.legend(fontsize=7, loc="lower left")
+        ax.legend(fontsize=8, loc="lower left")
         ax.set_title(f"k = {state['k']:g}: a {state['kind']} at the origin", fontsize=10)
         bare_axes(ax)
 
@@ -158,7 +158,7 @@ class PencilParametrizationExplorer(Explorer):
         if state["xy"] is not None:
             ax.plot(*state["xy"], "o", color="C2", markersize=9, markeredgecolor="black")
         set_box(ax, *box)
-        ax.legend(fontsize=7, loc="lower left")
+        ax.legend(fontsize=8, loc="lower left")
         ax.set_title("one more intersection with each line of the pencil", fontsize=10)
         bare_axes(ax)
 
@@ -229,7 +229,7 @@ class SilhouetteExplorer(TwoPanels, Explorer):
             if box[0][0] <= x <= box[0][1]:
                 ax.axvline(x, color="C3", linewidth=0.9, linestyle="--")
         set_box(ax, *box)
-        ax.legend(fontsize=7, loc="upper left")
+        ax.legend(fontsize=8, loc="upper left")
         ax.set_title("vertical tangents and crossings are roots of Res_y(f, f_y)", fontsize=10)
         bare_axes(ax)
         lower = self.lower_axes()
@@ -237,7 +237,7 @@ class SilhouetteExplorer(TwoPanels, Explorer):
         for x in state["roots"]:
             if box[0][0] <= x <= box[0][1]:
                 lower.axvline(x, color="C3", linewidth=0.9, linestyle="--")
-        lower.legend(fontsize=7, loc="upper left")
+        lower.legend(fontsize=8, loc="upper left")
         lower.set_yticks([])
 
     def describe(self, state: dict) -> str:
