@@ -94,15 +94,20 @@ def shade_area(ax, points, weights=None, samples: int = 300, **style) -> Axes:
     check_axes(ax)
     curve = bezier_samples(planar_points(points), weights, samples=samples)
     x, y = curve.T
-    # The sign of y dx on each little step of the sampled curve.
-    sign = np.sign(y[:-1] + y[1:]) * np.sign(np.diff(x))
-    zero = np.zeros(len(x) - 1)
-    quads = np.stack([np.column_stack(c) for c in ((x[:-1], zero), (x[1:], zero), (x[1:], y[1:]), (x[:-1], y[:-1]))],
-                     axis=1)  # (k, 4, 2): one strip between the axis and each step of the curve
-    colors = np.where(sign[:, None] > 0, to_rgba("C0"), to_rgba("C3"))
-    # Not antialiased: neighbouring strips would otherwise leave faint seams between them.
-    ax.add_collection(PolyCollection(quads[sign != 0], facecolors=colors[sign != 0], linewidths=0, antialiaseds=False,
-                                     alpha=style.get("alpha", 0.25)))
+    # The sign of y dx on each little step of the sampled curve; steps where neither y nor dx changes sign
+    # form runs along which the curve is monotone in x on one side of the axis: one polygon per run, so
+    # no seams show between neighbouring strips.
+    side, direction = np.sign(y[:-1] + y[1:]), np.sign(np.diff(x))
+    sign = side * direction
+    breaks = np.flatnonzero((side[1:] != side[:-1]) | (direction[1:] != direction[:-1])) + 1
+    polygons, colors = [], []
+    for start, stop in zip(np.r_[0, breaks], np.r_[breaks, len(sign)]):
+        if sign[start] == 0:
+            continue
+        run = curve[start : stop + 1]
+        polygons.append(np.vstack([run, [[run[-1, 0], 0.0], [run[0, 0], 0.0]]]))
+        colors.append(to_rgba("C0" if sign[start] > 0 else "C3"))
+    ax.add_collection(PolyCollection(polygons, facecolors=colors, linewidths=0, alpha=style.get("alpha", 0.25)))
     ax.axhline(0, color="0.3", linewidth=0.8)
     return finish_planar(ax)
 

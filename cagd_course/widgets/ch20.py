@@ -99,7 +99,7 @@ class HybridExplorer(Explorer):
         n = len(state["hybrid"].fixed) - 1
         ax.set_title(f"degree-{n} hybrid, moving point m = {state['hybrid'].m}: ‖Δ‖ = {state['delta']:.4f}",
                      fontsize=10)
-        ax.legend(fontsize=7, loc="lower center")
+        ax.legend(fontsize=8, loc="lower center")
 
     def describe(self, state: dict) -> str:
         h = state["hybrid"]
@@ -164,12 +164,13 @@ class MovingBoxExplorer(TwoPanels, Explorer):
         ax.set_title(f"{state['pieces']} piece(s), degree-{state['degree']} hybrids: largest ‖Δ‖ = "
                      f"{state['delta']:.2e}", fontsize=10)
         lower = self.lower_axes()
+        lower.set_position([0.14, 0.07, 0.83, 0.25])  # room for the log-scale tick labels and the y-label
         for n, values in state["deltas"].items():
             lower.semilogy(range(6), values, "o-", markersize=4, label=f"n = {n}")
         lower.axvline(state["depth"], color="0.5", linestyle=":")
         lower.set_xlabel("depth of subdivision")
-        lower.set_ylabel("max ‖Δ‖", fontsize=8)
-        lower.legend(fontsize=7)
+        lower.set_ylabel("max ‖Δ‖", fontsize=9)
+        lower.legend(fontsize=8)
 
     def describe(self, state: dict) -> str:
         values = state["deltas"][4]
@@ -271,7 +272,7 @@ class AdaptiveAreaExplorer(TwoPanels, Explorer):
         if state["joints"].size:
             ax.plot(*bezier.evaluate(points, state["joints"], weights).T, "|", color="C3", markersize=14,
                     markeredgewidth=1.5, label="where the pieces meet")
-            ax.legend(fontsize=7, loc="lower center")
+            ax.legend(fontsize=8, loc="lower center")
         result = state["hybrid"]
         ax.set_title(f"tol = {state['tol']:.0e}: {result.pieces} piece(s), area {result.value:.10f}", fontsize=10)
         lower = self.lower_axes()

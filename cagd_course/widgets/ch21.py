@@ -121,7 +121,7 @@ class QuadExplorer(TwoPanels, ControlPointEditor, _ExtraControls):
         count = len(state["preimages"])
         ax.set_title(f"{state['kind']} quad: E has {count} pre-image{'s' if count != 1 else ''} "
                      f"({int(state['inside'].sum())} in the square)", fontsize=10)
-        ax.legend(fontsize=7, loc="upper left")
+        ax.legend(fontsize=8, loc="upper left")
         lower = self.lower_axes()
         _square(lower)
         for (s, t), inside in zip(state["preimages"], state["inside"]):
@@ -203,17 +203,26 @@ class BirationalExplorer(ControlPointEditor, _ExtraControls):
         plot_quad(ax, quad)
         plot_axes_points(ax, quad)
         a_s, a_t = state["axes"]
+        # The frame of the sliders, widened to show both pencils' axes when they lie near it (A_t = (20, 0) of
+        # the notes' quad lies just right of the default frame).
+        low, high = np.array([self.limits] * 2, dtype=float).T
+        reach = 2 * (high - low)
+        for axis in (a_s, a_t):
+            if abs(axis[2]) > 1e-12:
+                point = axis[:2] / axis[2]
+                if np.all((point > low - reach) & (point < high + reach)):
+                    low, high = np.minimum(low, point - 2.5), np.maximum(high, point + 2.5)
         if state["base"] is not None:
             line = state["base"].line
-            xs = np.array(self.limits)
+            xs = np.array([low[0], high[0]])
             if abs(line[1]) > 1e-12:
                 ax.plot(xs, -(line[0] * xs + line[2]) / line[1], ":", color="C2", label="singular line $A_sA_t$")
-        ax.set_xlim(*self.limits)
-        ax.set_ylim(*self.limits)
+        ax.set_xlim(low[0], high[0])
+        ax.set_ylim(low[1], high[1])
         ax.set_aspect("equal", adjustable="box")
         title = "birational: two pencils" if state["birational"] else "not birational: the iso-lines miss the axes"
         ax.set_title(f"w11 = {weights[1, 1]:.4g}, {title}", fontsize=10)
-        ax.legend(fontsize=7, loc="upper left")
+        ax.legend(fontsize=8, loc="upper left")
 
     def describe(self, state: dict) -> str:
         w = state["weights"]
@@ -242,7 +251,7 @@ def birational_explorer(corners=None, draggable: bool | None = None) -> Biration
 class WarpExplorer(ControlPointEditor, _ExtraControls):
     """One picture through three maps of the same quad: bilinear, birational, projective. Notes §21.4-21.5."""
 
-    figsize = (11.0, 4.6)
+    figsize = (6.9, 3.0)  # the book's column: its text is shown at full size
     MAPS = ("bilinear", "birational", "projective")
 
     def __init__(self, corners=None, resolution: int = 96, draggable: bool | None = None):
@@ -307,7 +316,7 @@ class WarpExplorer(ControlPointEditor, _ExtraControls):
             if state["grid"]:
                 plot_isolines(panel, state["quad"], entry["weights"], ISO_VALUES, "s", label=False, linewidth=0.7)
                 plot_isolines(panel, state["quad"], entry["weights"], ISO_VALUES, "t", label=False, linewidth=0.7)
-            panel.set_title(f"{kind} map", fontsize=10)
+            panel.set_title(f"{kind} map", fontsize=9)
             panel.set(xticks=[], yticks=[], xlabel="", ylabel="")
 
     def describe(self, state: dict) -> str:
