@@ -100,12 +100,12 @@ class OffsetExplorer(TwoPanels, Explorer):
             ax.plot([], [], ":", color="C2", label="tightest bend on this side")
         count = len(state["cusps"])
         ax.set_title(f"offset at ρ = {rho:.2f}: {count} cusp{'s' if count != 1 else ''}", fontsize=10)
-        ax.legend(fontsize=7, loc="upper right")
+        ax.legend(fontsize=8, loc="upper right")
         bare_axes(ax)
         lower = self.lower_axes()
         draw_cusp_condition(lower, state["ts"], state["factor"], state["cusps"])
         lower.set_xticks([0, 0.5, 1])
-        lower.legend(fontsize=7, loc="upper center")
+        lower.legend(fontsize=8, loc="upper center")
 
     def describe(self, state: dict) -> str:
         low, high = state["interval"]
@@ -183,7 +183,7 @@ class PHOffsetExplorer(TwoPanels, Explorer):
         ax.plot(*state["sampled"][::8].T, "o", color="C0", markersize=3.5, label="Q + ρN, sampled")
         ax.set_title(f"ρ = {state['rho']:.2f}: rational quintic vs Q + ρN, largest gap {state['deviation']:.1e}",
                      fontsize=10)
-        ax.legend(fontsize=7, loc="lower right")
+        ax.legend(fontsize=8, loc="upper left")
         bare_axes(ax)
         lower = self.lower_axes()
         lower.plot(state["ts"], bernstein_horner(state["sigma"], state["ts"]), color="C2", label="σ(t) = u² + v²")
@@ -192,7 +192,7 @@ class PHOffsetExplorer(TwoPanels, Explorer):
         lower.set_ylim(bottom=0)
         lower.set_xticks([0, 0.5, 1])
         lower.set_xlabel("t")
-        lower.legend(fontsize=7, loc="lower left")
+        lower.legend(fontsize=8, loc="lower left")
 
     def describe(self, state: dict) -> str:
         weights = ", ".join(f"{w:.4g}" for w in state["weights"])
@@ -274,9 +274,10 @@ class GougingExplorer(Explorer):
 
     def draw(self, ax, state: dict) -> None:
         rho, base = state["rho"], state["base"]
-        ax.plot(*base.T, color="black", linewidth=2.2, label="curve to cut")
+        # The gouged stretches go under the curve, which stays visible on top of them.
         cut = np.where(state["gouged"][:, None], base, np.nan)
-        ax.plot(*cut.T, color="C1", linewidth=5, alpha=0.8, label="gouged")
+        ax.plot(*cut.T, color="C1", linewidth=6, alpha=0.6, label="gouged")
+        ax.plot(*base.T, color="black", linewidth=1.8, label="curve to cut")
         draw_offset(ax, state["path"], state["path_factor"], legend="tool centre's path")
         ax.plot(*state["reverse"].T, color="C2", linestyle=(0, (2, 2)), linewidth=1.3, label="path offset back by -ρ")
         if rho != 0:
@@ -286,7 +287,7 @@ class GougingExplorer(Explorer):
         titles = {"none": "no gouging", "local": "gouging: the tool is larger than a bend",
                   "global": "gouging: the tool reaches another part of the curve"}
         ax.set_title(f"tool radius {abs(rho):.2f}: {titles[state['kind']]}", fontsize=10)
-        ax.legend(fontsize=7, loc="upper right")
+        ax.legend(fontsize=8, loc="best")
         ax.autoscale_view()
         bare_axes(ax)
 
