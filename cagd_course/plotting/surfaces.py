@@ -18,7 +18,7 @@ from cagd_ref.surfaces import iso_curve, patch_normal, patch_point
 from ._style import check_axes
 
 __all__ = ["patch_grid", "plot_patch", "plot_control_net", "plot_tangent_plane", "finish_3d", "plot_iso_curve",
-           "plot_triangles", "plot_normals"]
+           "plot_triangles", "plot_normals", "label_3d"]
 
 NET_STYLE = {"color": "0.45", "linestyle": "--", "linewidth": 0.8, "marker": "o", "markersize": 3}
 
@@ -85,8 +85,12 @@ def plot_tangent_plane(ax, point, p_s, p_t, size: float = 0.5, color: str = "C2"
     return ax
 
 
-def finish_3d(ax, points, elev: float = 25.0, azim: float = -60.0, margin: float = 0.08) -> Axes:
-    """Equal axes around `points` (any array of 3-D points), a fixed view, three ticks per axis, axis labels."""
+def finish_3d(ax, points, elev: float = 25.0, azim: float = -60.0, margin: float = 0.08,
+              ticks: bool = True) -> Axes:
+    """Equal axes around `points` (any array of 3-D points), a fixed view, three ticks per axis, axis labels.
+
+    ticks=False drops the tick labels (for small panels whose coordinates nobody reads); tick labels are 8 pt.
+    """
     _three_d(ax)
     pts = as_float_array(points, "points").reshape(-1, 3)
     low, high = pts.min(axis=0), pts.max(axis=0)
@@ -97,8 +101,11 @@ def finish_3d(ax, points, elev: float = 25.0, azim: float = -60.0, margin: float
     ax.view_init(elev=elev, azim=azim)
     for axis, name in ((ax.xaxis, "x"), (ax.yaxis, "y"), (ax.zaxis, "z")):
         axis.set_major_locator(MaxNLocator(3))
-        axis.set_label_text(name)
-    ax.tick_params(labelsize=7, pad=0)
+        axis.set_label_text(name, fontsize=8)
+        if not ticks:
+            axis.set_ticklabels([])
+            axis.labelpad = -12  # the name next to the axis, where the tick labels would be
+    ax.tick_params(labelsize=8, pad=0)
     return ax
 
 
@@ -139,3 +146,18 @@ def plot_normals(ax, points, s, t, weights=None, length: float = 0.5, color: str
     normals = np.atleast_2d(patch_normal(net, s, t, weights))
     ax.quiver(*base.T, *(length * normals).T, color=color, arrow_length_ratio=0.2, linewidth=1)
     return ax
+
+
+def label_3d(ax, point, text: str, offset=(4, 4), **style):
+    """Write `text` next to a 3-D point, `offset` points away, as a 2-D annotation at the point's projection.
+
+    Call it after `finish_3d` (the projection needs the final limits and view). Unlike ``ax.text`` on 3-D axes,
+    the label's drawn extent is known, so it can be placed apart from its neighbours.
+    """
+    from mpl_toolkits.mplot3d import proj3d
+
+    _three_d(ax)
+    x, y, z = as_vector(point, "point", dim=3)
+    px, py, _ = proj3d.proj_transform(x, y, z, ax.get_proj())
+    style = {"fontsize": 8, "textcoords": "offset points", **style}
+    return ax.annotate(text, (px, py), xytext=offset, **style)

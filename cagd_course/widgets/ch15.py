@@ -17,7 +17,7 @@ from cagd_ref import surfaces
 from cagd_ref.bezier import evaluate
 
 from ..examples import notes_example
-from ..plotting.surfaces import finish_3d, plot_control_net, plot_iso_curve, plot_normals, plot_patch
+from ..plotting.surfaces import finish_3d, label_3d, plot_control_net, plot_iso_curve, plot_normals, plot_patch
 from ._base import Explorer, _fmt, _slider, _swatch, _want_ipympl
 
 __all__ = [
@@ -99,10 +99,10 @@ class PatchEditor(_ThreeD):
         plot_patch(ax, net, samples=9, iso=6, color="C0", alpha=0.2)
         plot_control_net(ax, net, alpha=0.6)
         ax.scatter(*state["moved"], color="C3", s=45, depthshade=False)
-        ax.text(*state["moved"], f"  {state['point']}", color="C3", fontsize=9)
         if state["normals"] is not None:
             plot_normals(ax, net, state["s"], state["t"], length=0.8, color="black")
         finish_3d(ax, net.reshape(-1, 3), elev=28, azim=-55)
+        label_3d(ax, state["moved"], state["point"], color="C3", fontsize=9, offset=(5, 3))
         ax.set_title(f"degree (3, 2) patch: {state['point']} moved to {_fmt(state['moved'])}", fontsize=10)
 
     def describe(self, state: dict) -> str:
@@ -297,9 +297,10 @@ class CurvatureExplorer(_ThreeD):
         for key, color in (((2, 0), "C3"), ((1, 1), "C4"), ((0, 2), "C1")):
             top = net[key]
             ax.plot([top[0], top[0]], [top[1], top[1]], [0.0, top[2]], color=color, linewidth=2.5)
-            ax.text(*top, f" P{key[0]}{key[1]}", color=color, fontsize=8)
         ax.quiver(*net[0, 0], 0, 0, 0.5, color="black", arrow_length_ratio=0.2)
         finish_3d(ax, np.vstack([net.reshape(-1, 3), [[0, 0, -1], [0, 0, 1]]]), elev=22, azim=-50)
+        for key, color in (((2, 0), "C3"), ((1, 1), "C4"), ((0, 2), "C1")):
+            label_3d(ax, net[key], f"P{key[0]}{key[1]}", color=color, offset=(4, 2))
         kind = ("elliptic" if state["gaussian"] > 1e-12 else "hyperbolic" if state["gaussian"] < -1e-12
                 else "parabolic or flat")
         ax.set_title(f"corner (0, 0): K = {state['gaussian']:.3f}, H = {state['mean']:.3f} ({kind})", fontsize=10)

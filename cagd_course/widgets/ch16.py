@@ -20,7 +20,7 @@ from cagd_ref.polynomials import bernstein_horner, horner
 
 from ..examples import notes_example
 from ..plotting.curves import plot_control_polygon
-from ..plotting.surfaces import finish_3d, plot_control_net, plot_patch, plot_tangent_plane
+from ..plotting.surfaces import finish_3d, label_3d, plot_control_net, plot_patch, plot_tangent_plane
 from ..plotting.vectors import plot_vector
 from ._base import Explorer, _fmt, _slider, _swatch, _want_ipympl
 
@@ -113,13 +113,16 @@ class QRTangentExplorer(Explorer):
         reach = 0.35 * (r - q)
         ax.plot(*np.array([q - reach, r + reach]).T, color="C2", linewidth=1, alpha=0.6)
         ax.plot(*np.array([q, r]).T, "o-", color="C2", linewidth=2, markersize=5, label="segment q r (tangent)")
-        plot_vector(ax, p, state["derivative"] / (len(points) - 1), color="C1", label="p′/n")
+        step = state["derivative"] / (len(points) - 1)
+        plot_vector(ax, p, step, color="C1")
+        # named at its middle, below the arrow: its tip can sit on a control point's label
+        ax.annotate("p′/n", p + 0.6 * step, xytext=(4, -12), textcoords="offset points", color="C1")
         ax.plot(*p, "ko", markersize=6)
         ax.annotate("q", q, xytext=(-10, 6), textcoords="offset points", color="C0")
         ax.annotate("r", r, xytext=(4, 6), textcoords="offset points", color="C3")
         ax.annotate("p", p, xytext=(4, -12), textcoords="offset points")
         ax.set_title(f"t = {state['t']:.2f}: p divides q r at {state['ratio']:.3f}", fontsize=10)
-        ax.legend(fontsize=7, loc="lower center")
+        ax.legend(fontsize=8, loc="best")
         ax.set(xticks=[], yticks=[], xlabel="", ylabel="")
 
     def describe(self, state: dict) -> str:
@@ -220,7 +223,8 @@ class PseudoSwitchExplorer(Explorer):
                ylabel="relative error")
         failure = (f"overflows from 1 − t = {broken.max():.0e} on" if broken.size else "fails only at t = 1")
         ax.set_title(f"(1 + t)^{state['degree']} near t = 1: the first form alone {failure}", fontsize=10)
-        ax.legend(fontsize=7, loc="upper right")
+        ax.legend(fontsize=8, loc="upper right")
+        ax.figure.subplots_adjust(bottom=0.14)  # room for the axis name under the tick labels
 
     def describe(self, state: dict) -> str:
         rows = [f"t = 1 − {state['gap']:.1e}: exact {state['exact']:.10g}"]
@@ -292,17 +296,30 @@ class SubPatchExplorer(Explorer):
         box = np.array(list(corners.values()))
         ax.plot(*box[[0, 1, 3, 2, 0]].T, ":", color="C4", linewidth=1)
         ax.scatter(*box.T, color="C4", s=22, depthshade=False)
-        for key, point in corners.items():
-            ax.text(*point, f" S{key}", color="C4", fontsize=7)
         ax.plot(*np.array([ends["A"], ends["B"]]).T, "-", color="C3", linewidth=2)
         ax.plot(*np.array([ends["C"], ends["D"]]).T, "-", color="C1", linewidth=2)
         size = 0.25 * float(np.ptp(points.reshape(-1, 3), axis=0).max())
         plot_tangent_plane(ax, p, state["p_s"], state["p_t"], size=size, color="C2", alpha=0.3)
         ax.quiver(*p, *(size * state["normal"]), color="black", arrow_length_ratio=0.15)
         ax.scatter(*p, color="black", s=25, depthshade=False)
-        finish_3d(ax, points.reshape(-1, 3))
+        finish_3d(ax, points.reshape(-1, 3), elev=35, azim=-35)
+        # labels after the view is fixed, each pushed away from the centre of the four points
+        middle = box.mean(axis=0)
+        for key, point in corners.items():
+            label_3d(ax, point, f"S{key}", color="C4", offset=self._away(ax, point, middle), ha="center",
+                     va="center")
         ax.set_title(f"(s, t) = ({state['s']:.2f}, {state['t']:.2f}): four sub-patch points, tangent plane",
-                     fontsize=10)
+                     fontsize=9)
+
+    @staticmethod
+    def _away(ax, point, middle) -> tuple[float, float]:
+        """An offset (points) of 12 pt from `point`, on the side away from `middle`, as seen on the screen."""
+        from mpl_toolkits.mplot3d import proj3d
+
+        (px, py, _), (mx, my, _) = (proj3d.proj_transform(*q, ax.get_proj()) for q in (point, middle))
+        d = np.array([px - mx, py - my])
+        d = d / (np.linalg.norm(d) or 1.0)
+        return (12 * d[0], 12 * d[1])
 
     def describe(self, state: dict) -> str:
         m, n = state["degrees"]
