@@ -2,7 +2,8 @@
 
 The kernels nbval starts inherit IPYTHONDIR, whose start-up file makes each kernel check the figures it
 displays (`cagd_course.figure_check`) into a report file; after each cell of a chapter notebook, the
-findings that cell produced fail it, naming the notebook, the cell and the colliding strings.
+findings that cell produced fail it, naming the notebook, the cell and the colliding strings. A chapter cell
+that writes to stderr (a warning, a log line: the book would show it) fails too.
 (A conftest under tests/ would not see the notebooks in chapters/.)
 """
 
@@ -35,8 +36,12 @@ def pytest_runtest_call(item):
         return (yield)
     seen = len(read_report(REPORT))
     result = yield
+    where = f"{Path(str(item.path)).name} {item.name}"
     findings = [finding for record in read_report(REPORT)[seen:] for finding in record["findings"]]
     if findings:
-        where = f"{Path(str(item.path)).name} {item.name}"
         raise AssertionError(f"{where}: figures a reader cannot read\n- " + "\n- ".join(findings))
+    # The book shows a cell's stderr: a chapter prints no warning or log line a reader would have to skip.
+    stderr = "".join(out.get("text", "") for out in item.test_outputs or [] if out.get("name") == "stderr")
+    if stderr.strip():
+        raise AssertionError(f"{where}: writes to stderr, which the book would show:\n{stderr.strip()[:600]}")
     return result
