@@ -91,6 +91,13 @@ def bare_axes(ax) -> None:
     ax.set(xticks=[], yticks=[], xlabel="", ylabel="")
 
 
+def _unlabel_series(figure) -> None:
+    """Hide every series of the figure from legends (matplotlib skips labels that start with "_")."""
+    for ax in figure.axes:
+        for handle in ax.get_legend_handles_labels()[0]:
+            handle.set_label("_" + handle.get_label())
+
+
 class TwoPanels:
     """Mixin: a second axes (self.lower) under the explorer's main one, cleared with it on every redraw."""
 
@@ -126,6 +133,9 @@ class Explorer:
     dpi = 100
     # The control the static figure sweeps; None means the first slider (else the first control).
     static_control: str | None = None
+    # True where `describe` gives the colour key (a legend redrawn on every move would cost more than the rest of
+    # the update): the drawn series then carry no legend labels, so the figure promises no legend it lacks.
+    key_in_readout = False
 
     def __init__(self, controls: dict, projection: str | None = None, interactive_canvas: bool = False):
         self.controls = dict(controls)
@@ -198,6 +208,8 @@ class Explorer:
             raise
         self._clear()
         self.draw(self.ax, state)
+        if self.key_in_readout:
+            _unlabel_series(self.figure)
         self.readout.value = self.describe(state)
         self._render()
         self.state = state

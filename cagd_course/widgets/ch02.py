@@ -57,6 +57,8 @@ __all__ = [
 class DeCasteljauExplorer(Explorer):
     """The de Casteljau triangle at t and the two halves it splits the curve into. Notes §2.3."""
 
+    key_in_readout = True
+
     def __init__(self, points=None, extrapolate: bool = False):
         self.points = _control_points(points, DEFAULT_CUBIC)
         self.extrapolate = bool(extrapolate)
@@ -83,9 +85,6 @@ class DeCasteljauExplorer(Explorer):
         ax.plot(*state["left"].T, color="C4", linewidth=3, alpha=0.35)
         ax.plot(*state["right"].T, color="C5", linewidth=3, alpha=0.35)
         ax.set_title(f"de Casteljau's algorithm at t = {t:.2f}")
-        # The colour key is in the readout (see describe), so the series carry no legend labels.
-        for line in ax.lines:
-            line.set_label("_" + line.get_label().lstrip("_"))
 
     def describe(self, state: dict) -> str:
         # The colour key lives here rather than in a legend: drawing legend text

@@ -246,13 +246,10 @@ class EvaluationCostExplorer(Explorer):
         n = state["degree"]
         ax.figure.subplots_adjust(left=0.14)  # room for four-digit tick labels
         for k, (method, name) in enumerate(METHOD_NAMES.items()):
-            ax.plot(state["degrees"], state["totals"][method], color=f"C{k}", label=name)
             total = state["totals"][method][n]
+            # The counts at the chosen degree go into the legend: at low degrees the dots nearly coincide.
+            ax.plot(state["degrees"], state["totals"][method], color=f"C{k}", label=f"{name}: {total}")
             ax.plot(n, total, "o", color=f"C{k}")
-            # Horner's count sits just under the nested Bernstein one: label it below its dot.
-            below = method == "horner"
-            ax.annotate(f"{total}", (n, total), xytext=(6, -11 if below else 4), textcoords="offset points",
-                        fontsize=8, color=f"C{k}")
         ax.axvline(n, color="0.7", linestyle=":")
         ax.set_xlabel("degree n")
         ax.set_ylabel("multiplies + adds per point")

@@ -289,8 +289,9 @@ def clip_lab_explorer(values=None, dmin: float = -2.0, dmax: float = 1.0) -> Cli
 class ClippingExplorer(_Panels, Explorer):
     """Step through the Bézier-clipping search: curves, fat line, explicit distance curve, ranges. Notes §7.7."""
 
-    figsize = (10.5, 4.6)
-    panel_boxes = ([0.05, 0.12, 0.44, 0.76], [0.56, 0.12, 0.42, 0.76])
+    figsize = (6.9, 3.4)
+    panel_boxes = ([0.02, 0.14, 0.45, 0.72], [0.58, 0.14, 0.39, 0.72])
+    key_in_readout = True
 
     def __init__(self, preset: str = "one intersection (Fig. 7.5)"):
         if preset not in PRESETS:
@@ -436,8 +437,8 @@ METHODS = {"subdivision": "Bézier subdivision", "intervals": "interval subdivis
 class SubdivisionComparisonExplorer(_Panels, Explorer):
     """The pairs of pieces that Bézier subdivision, interval subdivision and clipping examine per depth. Notes §7.4."""
 
-    figsize = (11.0, 4.3)
-    panel_boxes = ([0.05, 0.13, 0.28, 0.72], [0.38, 0.13, 0.28, 0.72], [0.71, 0.13, 0.28, 0.72])
+    figsize = (6.9, 3.3)
+    panel_boxes = ([0.07, 0.13, 0.26, 0.6], [0.39, 0.13, 0.26, 0.6], [0.71, 0.13, 0.26, 0.6])
 
     def __init__(self, preset: str = "five intersections"):
         if preset not in PRESETS:
@@ -469,8 +470,11 @@ class SubdivisionComparisonExplorer(_Panels, Explorer):
             plot_parameter_pairs(axes, state["steps"][method], state["depth"], state["found"])
             count = state["counts"][method]
             examined = int(count[state["depth"]]) if state["depth"] < len(count) else 0
-            axes.set_title(f"{title}: {examined} pairs at depth {state['depth']}\n({state['totals'][method]} in all)",
-                           fontsize=9)
+            axes.set_title(f"{title}\n{examined} pairs at depth {state['depth']}\n({state['totals'][method]} in all)",
+                           fontsize=8)
+            axes.tick_params(labelsize=8)
+            if axes is not ax:
+                axes.set_ylabel("")  # the three squares share the u axis: one label says it
 
     def describe(self, state: dict) -> str:
         counts = state["counts"]

@@ -109,7 +109,7 @@ class HullMarchExplorer(Explorer):
         low, high = float(np.min(state["coeffs"])), float(np.max(state["coeffs"]))
         room = 0.1 * max(high - low, 1e-12)
         ax.set_ylim(min(low, 0) - room, max(high, 0) + room)
-        ax.legend(fontsize=7, loc="best")
+        ax.legend(fontsize=8, loc="best")
         event = EVENTS[state["event"]]
         ax.set_title(f"hull marching, k = {state['step']} of {len(state['steps']) - 1}: {event}", fontsize=10)
 
@@ -185,12 +185,17 @@ class ConditioningExplorer(TwoPanels, Explorer):
         plot_root_errors(ax, state["exact"], state["found"])
         ax.set_xlim(0, 1)
         ax.set_ylim(1e-17, 1)
-        ax.legend(fontsize=7, loc="upper left")
+        ax.legend(fontsize=8, loc="upper left")
         n = state["degree"]
         ax.set_title(f"the roots k/{n + 1} of a degree-{n} polynomial: the error of each", fontsize=10)
         lower = self.lower_axes()
+        # Room at the left for the log axes' labels (10^-16 is wide).
+        ax.set_position([0.14, 0.40, 0.82, 0.52])
+        lower.set_position([0.14, 0.07, 0.82, 0.25])
         plot_conditioning(lower, self.degrees, self.largest, highlight=state["degree"])
         lower.set_ylim(1e-17, 1)
+        for line in lower.get_legend_handles_labels()[0]:
+            line.set_label("_" + line.get_label())  # the same two series as above: the legend there names them
 
     def describe(self, state: dict) -> str:
         largest = state["largest"]
@@ -257,14 +262,14 @@ class LineCurveExplorer(TwoPanels, Explorer):
         ax.set_xlim(box[0][0] - margin[0], box[1][0] + margin[0])
         ax.set_ylim(box[0][1] - margin[1], box[1][1] + margin[1])
         finish_planar(ax, adjustable="box")
-        ax.legend(fontsize=7, loc="upper right")
+        ax.legend(fontsize=8, loc="upper right")
         ax.set_title(f"{len(state['ts'])} intersection{'s' if len(state['ts']) != 1 else ''}: "
                      f"{a:.2f} x + {b:.2f} y {'+' if c >= 0 else '-'} {abs(c):.2f} = 0", fontsize=10)
         lower = self.lower_axes()
         plot_explicit(lower, state["values"], label="f(t) = line · P(t), times w(t)")
         mark_roots(lower, state["ts"], label=None)
         lower.set_xlim(-0.03, 1.03)
-        lower.legend(fontsize=7, loc="best")
+        lower.legend(fontsize=8, loc="best")
 
     def describe(self, state: dict) -> str:
         values = ", ".join(f"{v:.3g}" for v in state["values"])

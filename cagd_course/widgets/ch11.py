@@ -111,6 +111,8 @@ def _course_arc(points):
 class BestConstantExplorer(Explorer):
     """Five numbers on sliders: the best constant and its error under the L2 and the L∞ measure. Notes §11.1, §11.2."""
 
+    key_in_readout = True
+
     figsize = (6.5, 4.2)
 
     def __init__(self, values=None):
@@ -156,6 +158,8 @@ def best_constant_explorer(values=None) -> BestConstantExplorer:
 
 class FittingExplorer(TwoPanels, Explorer):
     """Fit a cubic to noisy samples: parameters, knots, control points, fairing; residuals, curvature. Notes §11.3."""
+
+    key_in_readout = True
 
     def __init__(self, shape: str = "half ellipse"):
         controls = {
@@ -243,6 +247,8 @@ def fitting_explorer(shape: str = "half ellipse") -> FittingExplorer:
 class FairingWeightExplorer(TwoPanels, Explorer):
     """Faired fits of one data set for growing weights: they shrink towards the least-squares line. Notes §11.4."""
 
+    key_in_readout = True
+
     family = tuple(10.0 ** k for k in range(-6, 3))
     curve_weights = 10.0 ** np.linspace(-7, 3, 21)
 
@@ -311,7 +317,7 @@ class FairingWeightExplorer(TwoPanels, Explorer):
         lower.set_xlabel("log₁₀ Lsq, Lsq = Σ‖P(s_k) − P_k‖²  (all weights 1e-7 ... 1e3; dot: current)", fontsize=8)
         lower.set_ylabel("log₁₀ ∫‖P''‖²", fontsize=8)
         lower.locator_params(nbins=5)
-        lower.tick_params(labelsize=7)
+        lower.tick_params(labelsize=8)
 
     def describe(self, state: dict) -> str:
         key = (f"{_swatch('k')} weight {state['weight']:.3g} &nbsp; {_swatch('0.75')} weights 1e-6, 1e-5, ..., 1e2 "
@@ -342,6 +348,8 @@ def fairing_weight_explorer(points=None, count: int = 10) -> FairingWeightExplor
 
 class BoxFitExplorer(Explorer):
     """The fairest curve through a box around every sample, boxes along the axes or along the curve. Notes §11.4.2."""
+
+    key_in_readout = True
 
     figsize = (6.5, 4.8)
 

@@ -93,7 +93,7 @@ class IntervalCurveExplorer(Explorer):
         ax.add_patch(box_patch(state["box"], facecolor="none", edgecolor="C4", alpha=1.0, linewidth=2.0, zorder=6))
         ax.plot(*state["box"].mean(axis=1), "o", color="C4", markersize=5, zorder=7, label=f"[P]({t:.2f})")
         ax.set_title(f"interval Bézier curve: the box [P]({t:.2f})", fontsize=10)
-        ax.legend(fontsize=7, loc="best")
+        ax.legend(fontsize=8, loc="best")
 
     def describe(self, state: dict) -> str:
         box, t = state["box"], state["t"]
@@ -200,13 +200,16 @@ class HermiteIntervalExplorer(TwoPanels, Explorer):
         ax.plot(t, f(t), color="black", linewidth=1.2, label="f(t)")
         ax.set_title(f"{state['function']}: degree {state['degree']} interval pieces, {len(state['pieces'])} of them",
                      fontsize=10)
-        ax.legend(fontsize=7, loc="upper left")
+        ax.legend(fontsize=8, loc="upper left")
         lower = self.lower_axes()
+        # Room at the left for the lower panel's small numbers (−0.010) and its label.
+        ax.set_position([0.13, 0.40, 0.83, 0.52])
+        lower.set_position([0.13, 0.07, 0.83, 0.25])
         for i, (a, b, coeffs) in enumerate(state["pieces"]):
             plot_interval_band(lower, coeffs, (a, b), samples=80, relative_to=f, label="band − f" if i == 0 else None)
         lower.axhline(0.0, color="black", linewidth=1.0)
         lower.set_ylabel("minus f", fontsize=8)
-        lower.legend(fontsize=7, loc="upper right")
+        lower.legend(fontsize=8, loc="upper right")
 
     def describe(self, state: dict) -> str:
         ratio = state["bound"] / state["error"] if state["error"] else math.inf
@@ -277,14 +280,14 @@ class DegreeReductionExplorer(TwoPanels, Explorer):
         ax.plot(points[:, 0], points[:, 1], "--o", color="0.6", linewidth=0.8, markersize=3)
         ax.set_aspect("equal", adjustable="datalim")
         ax.set_title(f"{count} quartic interval piece{'s' if count > 1 else ''}", fontsize=10)
-        ax.legend(fontsize=7, loc="best")
+        ax.legend(fontsize=8, loc="best")
         lower = self.lower_axes()
         depths = np.arange(MAX_DEPTH + 1)
         lower.semilogy(depths, state["bounds"], "o-", color="C3", label="guaranteed bound")
         lower.semilogy(depths, state["deviations"], "s--", color="C0", label="true deviation")
         lower.axvline(state["depth"], color="0.5", linewidth=0.8)
         lower.set_xlabel("halvings", fontsize=8)
-        lower.legend(fontsize=7)
+        lower.legend(fontsize=8)
 
     def describe(self, state: dict) -> str:
         ratio = state["bound"] / state["deviation"] if state["deviation"] else math.inf

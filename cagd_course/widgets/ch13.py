@@ -98,7 +98,7 @@ class BandExplorer(Explorer):
         ax.set_ylabel("value")
         ax.set_title(f"{state['method']} in {state['bits']}-bit arithmetic: {state['sign_changes']} sign changes",
                      fontsize=10, pad=14)
-        ax.legend(fontsize=7, loc="upper right")
+        ax.legend(fontsize=8, loc="upper right")
 
     def describe(self, state: dict) -> str:
         lines = [
@@ -180,7 +180,7 @@ class AffineRoundoffExplorer(Explorer):
         xlim, ylim = box_limits((c0, e0), (c1, e1), (state["centre"], state["radius"]))
         ax.set(xlim=xlim, ylim=ylim, aspect="equal", xlabel="x", ylabel="y")
         ax.set_title(f"t = {state['t']:.4g}, η = 2^−{state['bits']}: the image box widened by ε(t)", fontsize=10)
-        ax.legend(fontsize=7, loc="upper left")
+        ax.legend(fontsize=8, loc="upper left")
 
     def describe(self, state: dict) -> str:
         eta = state["eta"]
@@ -245,7 +245,7 @@ class NumberLineExplorer(Explorer):
     def draw(self, ax, state: dict) -> None:
         plot_number_line(ax, state["x"], state["bits"])
         ax.set_title(f"x = {state['x']:.10g} among the {state['bits']}-bit numbers", fontsize=10)
-        ax.legend(fontsize=7, loc="upper center", ncol=4, bbox_to_anchor=(0.5, 1.0))
+        ax.legend(fontsize=8, loc="upper center", ncol=4, bbox_to_anchor=(0.5, 1.0))
 
     def describe(self, state: dict) -> str:
         low, high = state["neighbours"]
