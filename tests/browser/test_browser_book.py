@@ -199,23 +199,32 @@ RAW_TABLES = """() => {
   return found;
 }"""
 
+# Displayed formulas wider than their box: their ends are cut off.
+CLIPPED_MATH = """() => [...document.querySelectorAll("mjx-container[display='true']")]
+  .filter((math) => math.checkVisibility() && math.scrollWidth > math.clientWidth + 1)
+  .map((math) => (math.getAttribute("aria-label") || math.textContent).slice(0, 60))"""
+
 MAX_VISIBLE_CODE = 0.25
 
 
 def test_every_chapter_page_reads_as_a_textbook(book, page, artefacts):
-    """Visible code at most a quarter of the lines, no code block cut off, no table left as raw text."""
+    """Visible code at most a quarter of the lines; no code block or formula cut off; no table or TeX left raw."""
     rows, problems = [], []
     for chapter in COURSE.chapters:
         _open(page, book, _doc(chapter.notebook))
         lines = page.evaluate(READING_LINES)
         share = lines["code"] / max(1, lines["code"] + lines["prose"])
         wide, raw = page.evaluate(OVERFLOWING_CODE), page.evaluate(RAW_TABLES)
+        tex, clipped = page.evaluate(RAW_TEX), page.evaluate(CLIPPED_MATH)
         rows.append(f"{chapter.number:>2} {share:6.1%}  code {lines['code']:>4}  prose {lines['prose']:>5}  "
-                    f"wide code blocks {len(wide):>2}  raw tables {len(raw):>2}")
+                    f"wide code blocks {len(wide):>2}  raw tables {len(raw):>2}  raw TeX {len(tex):>2}  "
+                    f"clipped formulas {len(clipped):>2}")
         if share > MAX_VISIBLE_CODE:
             problems.append(f"chapter {chapter.number}: visible code is {share:.0%} of the page's lines")
         problems += [f"chapter {chapter.number}: code block wider than its box: {line!r}" for line in wide]
         problems += [f"chapter {chapter.number}: table shown as raw text: {text!r}" for text in raw]
+        problems += [f"chapter {chapter.number}: TeX left untypeset: {text!r}" for text in tex]
+        problems += [f"chapter {chapter.number}: formula wider than its box: {text!r}" for text in clipped]
     report = "chapter  visible code share (target <= 25 %)\n" + "\n".join(rows)
     (artefacts / "reading-form.txt").write_text(report + "\n", encoding="utf-8")
     print(report)
@@ -236,7 +245,13 @@ def test_every_static_slider_of_every_chapter_shows_another_frame(book, page):
             image = figure.locator("img.cagd-sx-frame")
             before = image.get_attribute("src")
             slider.focus()
-            page.keyboard.press("End" if slider.input_value() != slider.get_attribute("max") else "Home")
-            if image.get_attribute("src") == before:
+            # One step, else the far end (a sweep may come back to its first picture: a line turned by 180°).
+            moved = False
+            for key in ("ArrowRight", "ArrowLeft", "End", "Home"):
+                page.keyboard.press(key)
+                if image.get_attribute("src") != before:
+                    moved = True
+                    break
+            if not moved:
                 dead.append(f"chapter {chapter.number}, explorer {index + 1}")
     assert dead == []
