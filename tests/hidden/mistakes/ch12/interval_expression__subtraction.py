@@ -58,7 +58,8 @@ class Interval:
 
 
 def interval_expression(expr):
-    """Evaluate an expression of intervals and numbers with `Interval`, plain data in and out. Notes §12.1.
+    """Evaluate an expression of intervals and numbers with `Interval`, plain data in
+    and out. Notes §12.1.
 
     expr: a number; a list [lo, hi] (the interval Interval(lo, hi)); or a
     tuple (op, operand, ...) with op one of "+", "-", "*", "/" (two operands),
@@ -72,7 +73,9 @@ def interval_expression(expr):
     >>> from cagd_ref.interval_bezier import interval_expression
     >>> interval_expression(("-", [1, 2], [1, 2]))
     (-1.0, 1.0)
-    >>> interval_expression(("*", [1, 2], ("+", [-1, 0], 1)))     # [u]([v] + [w]) of the notes
+    >>> interval_expression(
+    ...     ("*", [1, 2], ("+", [-1, 0], 1))
+    ... )  # [u]([v] + [w]) of the notes
     (0.0, 2.0)
     >>> interval_expression(("width", ("/", 1, [2, 4])))
     0.25
