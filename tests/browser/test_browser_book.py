@@ -199,10 +199,14 @@ RAW_TABLES = """() => {
   return found;
 }"""
 
-# Displayed formulas wider than their box: their ends are cut off.
+# Displayed formulas wider than the column (cut off, or, when numbered, a box that MathJax widened past it), and
+# formulas MathJax could not typeset (its error boxes).
 CLIPPED_MATH = """() => [...document.querySelectorAll("mjx-container[display='true']")]
-  .filter((math) => math.checkVisibility() && math.scrollWidth > math.clientWidth + 1)
-  .map((math) => (math.getAttribute("aria-label") || math.textContent).slice(0, 60))"""
+  .filter((math) => math.checkVisibility() && (math.scrollWidth > math.clientWidth + 1
+    || math.getBoundingClientRect().width > math.parentElement.clientWidth + 1))
+  .map((math) => math.textContent.slice(0, 60))"""
+MATH_ERRORS = """() => [...document.querySelectorAll("mjx-merror")].map((error) =>
+  (error.getAttribute("data-mjx-error") || error.textContent).slice(0, 80))"""
 
 MAX_VISIBLE_CODE = 0.25
 
@@ -215,7 +219,7 @@ def test_every_chapter_page_reads_as_a_textbook(book, page, artefacts):
         lines = page.evaluate(READING_LINES)
         share = lines["code"] / max(1, lines["code"] + lines["prose"])
         wide, raw = page.evaluate(OVERFLOWING_CODE), page.evaluate(RAW_TABLES)
-        tex, clipped = page.evaluate(RAW_TEX), page.evaluate(CLIPPED_MATH)
+        tex, clipped = page.evaluate(RAW_TEX) + page.evaluate(MATH_ERRORS), page.evaluate(CLIPPED_MATH)
         rows.append(f"{chapter.number:>2} {share:6.1%}  code {lines['code']:>4}  prose {lines['prose']:>5}  "
                     f"wide code blocks {len(wide):>2}  raw tables {len(raw):>2}  raw TeX {len(tex):>2}  "
                     f"clipped formulas {len(clipped):>2}")
@@ -223,7 +227,7 @@ def test_every_chapter_page_reads_as_a_textbook(book, page, artefacts):
             problems.append(f"chapter {chapter.number}: visible code is {share:.0%} of the page's lines")
         problems += [f"chapter {chapter.number}: code block wider than its box: {line!r}" for line in wide]
         problems += [f"chapter {chapter.number}: table shown as raw text: {text!r}" for text in raw]
-        problems += [f"chapter {chapter.number}: TeX left untypeset: {text!r}" for text in tex]
+        problems += [f"chapter {chapter.number}: TeX left untypeset or in error: {text!r}" for text in tex]
         problems += [f"chapter {chapter.number}: formula wider than its box: {text!r}" for text in clipped]
     report = "chapter  visible code share (target <= 25 %)\n" + "\n".join(rows)
     (artefacts / "reading-form.txt").write_text(report + "\n", encoding="utf-8")
