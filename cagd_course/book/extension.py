@@ -107,6 +107,21 @@ def drop_widget_state(app, env) -> None:
         data.get("js_files", {}).pop("ipywidgets_state", None)
 
 
+def keep_tagged_formulas_whole(app, doctree: nodes.document) -> None:
+    """Hand a displayed formula with a `\\tag` to MathJax as written.
+
+    Sphinx wraps every displayed formula that holds a line break in `\\begin{split}`, and MathJax refuses
+    `\\tag` there ("\\tag not allowed in split environment"): a numbered formula with a matrix, cases or an
+    aligned block would show as an error box. Its own environments already lay out its lines.
+    """
+    opening, closing = app.config.mathjax_display
+    for node in doctree.findall(nodes.math_block):
+        text = node.astext()
+        if "\\tag" in text and not node.get("number") and not node.get("nowrap"):
+            node["nowrap"] = True  # written out as it is: the delimiters go in with it
+            node.children = [nodes.Text(f"{opening}{text}{closing}")]
+
+
 def setup(app):
     app.add_config_value("cagd_pages", {}, "env", dict)
     # A digest of the course's code: when it changes, every page is read again (its outputs may change).
@@ -115,5 +130,6 @@ def setup(app):
     # After MyST-NB's own builder-inited handler (priority 500) has made its configuration.
     app.connect("builder-inited", use_work_folder, priority=900)
     app.connect("doctree-read", add_run_box)
+    app.connect("doctree-read", keep_tagged_formulas_whole)
     app.connect("env-updated", drop_widget_state)
     return {"parallel_read_safe": True, "parallel_write_safe": True}
