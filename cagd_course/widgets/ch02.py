@@ -317,7 +317,8 @@ class DegreeElevationExplorer(Explorer):
         plot_control_polygon(ax, self.points, labels=False, color="0.3", legend=f"degree {len(self.points) - 1}")
         degree = len(state["polygon"]) - 1
         ax.plot(*state["polygon"].T, "o-", color="C1", markersize=3, linewidth=1.2, label=f"degree {degree}")
-        ax.set_title(f"Degree elevation {state['steps']} times: max vertex distance {state['distance']:.3g}")
+        steps = state["steps"]
+        ax.set_title(f"Degree elevation, {steps} step{'s' * (steps != 1)}: max vertex distance {state['distance']:.3g}")
         ax.legend(fontsize=8, loc="lower center")
 
     def describe(self, state: dict) -> str:
@@ -399,9 +400,13 @@ class CurvatureCombExplorer(Explorer):
         plot_control_polygon(ax, self.points, legend="control polygon")
         teeth = len(state["bases"])
         plot_curvature_comb(ax, self.points, teeth, self.values["length"], self.weights)
-        ax.set_title(f"Curvature comb, {teeth} teeth; longest tooth = max |κ| = {state['max_curvature']:.3g}",
-                     fontsize=10)
-        ax.legend(fontsize=8, loc="upper right")
+        # The longest tooth has the chosen length; it stands where |κ| is largest.
+        ax.set_title(
+            f"Curvature comb, {teeth} teeth: longest tooth {self.values['length']:g}, "
+            f"at max |κ| = {state['max_curvature']:.3g}",
+            fontsize=10,
+        )
+        ax.legend(fontsize=8, loc="lower center")
 
     def describe(self, state: dict) -> str:
         return f"max |κ| = {state['max_curvature']:.4g}"
