@@ -142,11 +142,24 @@ BOOK_FORM = {
     "check": (["hide-input"], "Show the check"),
     "figure": (["hide-input"], "Show the code of this figure"),
     # The output of a reference-source cell is the listing: the input goes, the listing is folded.
-    "reference-source": (["remove-input", "hide-output"], "Reference implementation{name}: try the exercise first"),
+    "reference-source": (["remove-input", "hide-output"], "Reference implementation"),
 }
 
 
-def _book_form(notebook: nbformat.NotebookNode) -> nbformat.NotebookNode:
+def _listing_label(source: str, exercises: dict[str, str]) -> str:
+    """The toggle of a reference listing: what it shows and, for a graded function, which exercise to try first.
+
+    exercises: function name -> exercise id of the chapter ("de_casteljau" -> "02.de_casteljau").
+    """
+    names = [name.rsplit(".", 1)[-1] for name in re.findall(r"show_source\(\s*([\w.]+)", source)]
+    label = "Reference implementation" + (f" of {', '.join(names)}" if names else "")
+    graded = [exercises[name] for name in names if name in exercises]
+    if graded:
+        label += f": try exercise {', '.join(graded)} first"
+    return label
+
+
+def _book_form(notebook: nbformat.NotebookNode, exercises: dict[str, str] | None = None) -> nbformat.NotebookNode:
     """The notebook as the book shows it: each code cell's role becomes MyST-NB's tags and toggle label."""
     for cell in notebook.cells:
         if cell.cell_type != "code":
@@ -158,9 +171,10 @@ def _book_form(notebook: nbformat.NotebookNode) -> nbformat.NotebookNode:
         extra, label = BOOK_FORM[role]
         cell.metadata["tags"] = [*tags, *(tag for tag in extra if tag not in tags)]
         if label:
-            names = re.findall(r"show_source\((\w+)", cell.source)
-            label = label.format(name=f" of {', '.join(names)}" if names else "")
-            hide = "Hide the listing" if role == "reference-source" else "Hide the code"
+            if role == "reference-source":
+                label, hide = _listing_label(cell.source, exercises or {}), "Hide the listing"
+            else:
+                hide = "Hide the code"
             cell.metadata["mystnb"] = {"code_prompt_show": label, "code_prompt_hide": hide}
     return notebook
 
@@ -176,13 +190,14 @@ def _stage(course: Course, chapters: list[Chapter], src: Path) -> None:
     wanted = {}
     for path in (p for c in chapters for p in (c.notebook, c.exercises) if p is not None):
         wanted[src / path.relative_to(course.root)] = path
-    chapter_files = {c.notebook for c in chapters}
+    # A chapter's graded functions, by name: their listings say which exercise to try first.
+    exercises = {c.notebook: {e.split(".", 1)[1]: e for e in c.exercise_points} for c in chapters}
     for stale in set(src.rglob("*.ipynb")) - set(wanted):
         stale.unlink()
     for copy, original in wanted.items():
         copy.parent.mkdir(parents=True, exist_ok=True)
-        if original in chapter_files:
-            text = nbformat.writes(_book_form(nbformat.read(original, as_version=4)))
+        if original in exercises:
+            text = nbformat.writes(_book_form(nbformat.read(original, as_version=4), exercises[original]))
             _write_if_changed(copy, text)
         elif not copy.is_file() or copy.read_bytes() != original.read_bytes():
             shutil.copyfile(original, copy)

@@ -36,8 +36,11 @@ SETTINGS = {
     "@jupyterlab/notebook-extension/tracker": {"windowingMode": "none"},
     "@jupyterlab/apputils-extension/notification": {"fetchNews": "false", "checkForUpdates": False},
 }
+# Every code cell whose input shows has its execution count (collapsed cells show no prompt).
 ALL_RUN = """() => {
-  const prompts = [...document.querySelectorAll(".jp-CodeCell .jp-InputPrompt")].map(p => p.textContent.trim());
+  const prompts = [...document.querySelectorAll(".jp-CodeCell")]
+    .filter(cell => !cell.querySelector(".jp-InputPlaceholder"))
+    .map(cell => cell.querySelector(".jp-InputPrompt").textContent.trim());
   return prompts.length > 0 && prompts.every(p => /^\\[\\d+\\]:$/.test(p));
 }"""
 

@@ -277,7 +277,8 @@ def test_roles_remove_setup_fold_checks_figures_and_reference_code_and_agg_draws
     assert "{prf:algorithm}" not in page and "{solution}" not in page
     assert "\N{CHECK MARK} the answer is 42" in page
     assert "Show the check" in page and "Show the code of this figure" in page
-    assert "Reference implementation of bernstein: try the exercise first" in page
+    # The tiny course grades no `bernstein`: its listing has no exercise to point to.
+    assert "Reference implementation of bernstein" in page and "try exercise" not in page
     assert re.search(r'<img alt="_images/[^"]+\.png"|<img[^>]+\.png', page.split("Show the code of this figure")[1])
     # The notebook itself is unchanged: the roles are tags, the book's tags are added to the staged copy only.
     tags = [c.metadata.get("tags") for c in nbformat.read(root / "chapters" / "02-second.ipynb", 4).cells[1:]]
@@ -293,3 +294,15 @@ def test_an_execution_whose_figure_cells_drew_nothing_is_run_again():
     figure.outputs = [nbformat.v4.new_output("display_data", data={"image/png": "iVBORw0KGgo="})]
     assert not _drew_no_figure(notebook)
     assert not _drew_no_figure(new_notebook(cells=[_role_cell("x = 1", "compute")]))
+
+
+def test_a_listing_of_a_graded_function_names_the_exercise_to_try_first():
+    from cagd_course.book.build import _listing_label
+
+    exercises = {"de_casteljau": "02.de_casteljau", "subdivide": "02.subdivide"}
+    assert _listing_label("display(show_source(de_casteljau))", exercises) == (
+        "Reference implementation of de_casteljau: try exercise 02.de_casteljau first"
+    )
+    assert _listing_label("display(show_source(continuity.curvature_comb))", exercises) == (
+        "Reference implementation of curvature_comb"
+    )
