@@ -87,6 +87,7 @@ _STATIC_SCRIPT = """(function () {
   var play = root.querySelector(".cagd-sx-play"), timer = null;
   function show(i) {
     img.src = "data:image/png;base64," + data.frames[i];
+    img.alt = data.alts[i];
     out.textContent = data.labels[i];
     readout.innerHTML = data.readouts[i];
     range.value = i;
@@ -116,7 +117,7 @@ _STATIC_STYLE = (
 def frames(explorer, count: int = 21) -> tuple[str, list[dict], int]:
     """Sweep the main control over about `count` values: (its name, frames, index of the current value).
 
-    Each frame is {"label", "png" (palette PNG bytes), "readout" (HTML)}.
+    Each frame is {"label", "png" (palette PNG bytes), "readout" (HTML), "alt" (the frame's title)}.
     Values the explorer rejects are left out; afterwards every control has
     its value again and the figure shows what it showed before.
     """
@@ -133,7 +134,10 @@ def frames(explorer, count: int = 21) -> tuple[str, list[dict], int]:
             if value == saved[name]:
                 start = len(frames)
             png = _compact_png(explorer.view.value if isinstance(explorer.view, widgets.Image) else explorer.png())
-            frames.append({"label": _label(control, value), "png": png, "readout": explorer.readout.value})
+            frames.append(
+                {"label": _label(control, value), "png": png, "readout": explorer.readout.value,
+                 "alt": explorer.ax.get_title()}
+            )
     finally:
         explorer.update(**saved)
     return name, frames, start
@@ -149,6 +153,8 @@ def html_figure(explorer, count: int = 21) -> str:
     data = {
         "labels": [f["label"] for f in swept],
         "readouts": [f["readout"] for f in swept],
+        # The picture's text alternative follows the frame (its title says what the frame shows).
+        "alts": [f.get("alt") or description for f in swept],
         "frames": [base64.b64encode(f["png"]).decode("ascii") for f in swept],
     }
     # Inside a <script> element only "</" could end it early.

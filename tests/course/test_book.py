@@ -150,6 +150,8 @@ def test_an_explorer_shows_a_static_figure_and_no_dead_widget(book):
     data = json.loads(re.search(r"<script type='application/json' class='cagd-sx-data'>(.*?)</script>", page).group(1))
     assert data["labels"] == ["0.00", "0.50", "1.00"]
     assert len(set(data["frames"])) == 3 and "P(1.00)" in data["readouts"][2]
+    # Each frame's text alternative is its own title (the script sets it with the frame).
+    assert data["alts"] == [f"de Casteljau's algorithm at t = {t}" for t in ("0.00", "0.50", "1.00")]
     assert "printed by chapter one" in page
 
 
