@@ -31,6 +31,7 @@ from ._base import (
     _swatch,
     _want_ipympl,
 )
+from ._static import frame_count
 
 __all__ = [
     "de_casteljau_explorer",
@@ -153,7 +154,13 @@ class ControlPointEditor(Explorer):
         ax.set_xlim(*self.limits)
         ax.set_ylim(*self.limits)
         ax.set_aspect("equal", adjustable="box")
-        ax.set_title("Drag the control points" if self.draggable else "Move the control points with the sliders")
+        if frame_count():  # a static page: one slider (x0) is swept, nothing can be dragged
+            title = "The curve follows P0 as the slider x0 moves it"
+        elif self.draggable:
+            title = "Drag the control points, or use the sliders"
+        else:
+            title = "Move the control points with the sliders"
+        ax.set_title(title)
         ax.legend(fontsize=8, loc="upper right")
 
     # Mouse dragging, as plain methods so tests can drive them without a browser.
