@@ -30,6 +30,8 @@ __all__ = ["BuiltPage", "BookError", "build_book", "DEFAULT_FRAMES", "CONF_DIR"]
 
 CONF_DIR = Path(__file__).resolve().parent
 WORK = Path("_build") / ".book"
+# The course's notation table: the book's front matter (one symbol, one meaning in every chapter).
+NOTATION = CONF_DIR / "notation.md"
 DEFAULT_FRAMES = 21
 FINGERPRINT = "fingerprint.txt"
 
@@ -102,6 +104,9 @@ def _landing_page(course: Course, chapters: list[Chapter]) -> str:
         "notebook, replace each stub by your own function and run its self-check cell; "
         "`./course cagd check exercises/<notebook>` checks a whole notebook.",
         "",
+        "**Notation.** One symbol has one meaning in the whole course; the [notation](notation.md) page lists "
+        "them.",
+        "",
         "**Teaching.** `./course cagd validate` proves the hidden suites (reference 100 %, stub 0 %, recorded "
         "mistakes below 100 %), `./course cagd grade submissions/ --out graded/` grades a class into a gradebook, "
         "feedback pages and Gradescope-style results, and `./course build --pdf` prints this book.",
@@ -122,6 +127,7 @@ def _landing_page(course: Course, chapters: list[Chapter]) -> str:
         lines.append(line)
     lines.append("")
     for caption, docs in (
+        ("Front matter", [NOTATION.stem]),
         ("Chapters", [_docname(course, c.notebook) for c in chapters]),
         ("Exercises", [_docname(course, c.exercises) for c in chapters if c.exercises is not None]),
     ):
@@ -202,6 +208,7 @@ def _stage(course: Course, chapters: list[Chapter], src: Path) -> None:
         elif not copy.is_file() or copy.read_bytes() != original.read_bytes():
             shutil.copyfile(original, copy)
     _write_if_changed(src / "index.md", _landing_page(course, chapters))
+    _write_if_changed(src / NOTATION.name, NOTATION.read_text(encoding="utf-8"))
 
 
 def _pages(course: Course, chapters: list[Chapter], failures: dict[int, str]) -> dict:
@@ -419,7 +426,7 @@ def build_book(
         overrides = {
             "project": course.title,
             "html_title": course.title,
-            "include_patterns": ["index.md", *rel.values(), *exercises],
+            "include_patterns": ["index.md", NOTATION.name, *rel.values(), *exercises],
             # Exercise notebooks are shown as shipped (their stubs raise); a failed chapter is not run twice.
             "nb_execution_excludepatterns": [*exercises, *(rel[n] for n in failures)],
             "nb_execution_cache_path": str(work / "jupyter_cache"),

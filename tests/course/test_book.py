@@ -129,6 +129,18 @@ def test_the_landing_page_and_the_sidebar_come_from_book_toml(book):
         assert f'href="{target}"' in sidebar
 
 
+def test_the_notation_table_is_the_front_matter_of_every_book(book):
+    _, out, _ = book
+    notation = _text(_html(out, "notation.html"))
+    # The course's table, rendered: its Bernstein and B-spline rows with their formulas typeset by MathJax.
+    assert "One symbol has one meaning" in notation and "B-spline basis function" in notation
+    assert r"\binom{n}{i}" in _html(out, "notation.html")
+    index = _html(out, "index.html")
+    assert 'href="notation.html"' in index
+    sidebar = _html(out, "chapters/01-first.html").split('class="bd-links bd-docs-nav"', 1)[1]
+    assert sidebar.index('href="../notation.html"') < sidebar.index('href="#"')
+
+
 def test_a_chapter_page_has_navigation_contents_download_and_a_run_box(book):
     _, out, _ = book
     page = _html(out, "chapters/01-first.html")
