@@ -15,14 +15,14 @@ from pathlib import Path
 
 import pytest
 
-from cagd_course.figure_check import checking_environment, read_report
+from cagd_course.figure_check import REPORT_ENV, checking_environment, read_report
 
 _FOLDER = Path(tempfile.mkdtemp(prefix="cagd-figure-check-"))
 REPORT = _FOLDER / "report.jsonl"
 # Only what the kernels need: the pytest process itself keeps its own matplotlib backend.
 _environment = checking_environment(_FOLDER / "ipython", REPORT)
-os.environ["IPYTHONDIR"] = _environment["IPYTHONDIR"]
-os.environ["CAGD_FIGURE_REPORT"] = str(REPORT)
+for _name in ("IPYTHONDIR", REPORT_ENV):
+    os.environ[_name] = _environment[_name]
 
 
 def _is_chapter_cell(item) -> bool:

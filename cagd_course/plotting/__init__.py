@@ -17,7 +17,8 @@ same Axes, so calls chain and several drawings share one picture. Planar
 drawings switch on an equal aspect ratio (circles look round) and label the
 axes x and y unless the caller already did. Extra keyword arguments (`**style`)
 go to the underlying matplotlib call and override the defaults. The first four
-families are importable from here too (``cagd_course.plotting.plot_bezier``);
+families are importable from here too (``cagd_course.plotting.plot_bezier``), as is
+`hide_from_legend` (a panel whose series an earlier legend names);
 the others by their module (``from cagd_course.plotting.clipping import
 plot_fat_line``), since some share names for different drawings (`plot_line`
 draws a clipped line in `clipping` and a line across a fixed view in `pencils`).
@@ -26,9 +27,10 @@ draws a clipped line in `clipping` and a line across a fixed view in `pencils`).
 from __future__ import annotations
 
 from . import algebraic, bsplines, curves, vectors
+from ._style import hide_from_legend
 from .algebraic import *  # noqa: F401,F403
 from .bsplines import *  # noqa: F401,F403
 from .curves import *  # noqa: F401,F403
 from .vectors import *  # noqa: F401,F403
 
-__all__ = curves.__all__ + bsplines.__all__ + algebraic.__all__ + vectors.__all__
+__all__ = [*curves.__all__, *bsplines.__all__, *algebraic.__all__, *vectors.__all__, "hide_from_legend"]

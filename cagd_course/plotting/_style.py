@@ -35,3 +35,16 @@ def finish_planar(ax: Axes, adjustable: str = "datalim") -> Axes:
     if not ax.get_ylabel():
         ax.set_ylabel("y")
     return ax
+
+
+def hide_from_legend(ax: Axes) -> Axes:
+    """Keep every series drawn so far on `ax` out of legends (matplotlib skips labels starting with "_").
+
+    For a panel whose series an earlier legend of the same figure already names.
+    """
+    check_axes(ax)
+    for artist in [*ax.lines, *ax.patches, *ax.collections]:
+        label = artist.get_label()
+        if label and not label.startswith("_"):  # legends skip empty labels already
+            artist.set_label("_" + label)
+    return ax

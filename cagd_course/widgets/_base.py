@@ -35,6 +35,7 @@ from traitlets import TraitError
 from cagd_ref._validation import as_points
 
 from ..figure_check import report_findings
+from ..plotting import hide_from_legend
 from . import _static
 
 __all__ = ["Explorer"]
@@ -89,13 +90,6 @@ def _fmt(vector) -> str:
 def bare_axes(ax) -> None:
     """Drop ticks and axis labels: a polygon's coordinates say little, and tick labels cost most in a redraw."""
     ax.set(xticks=[], yticks=[], xlabel="", ylabel="")
-
-
-def _unlabel_series(figure) -> None:
-    """Hide every series of the figure from legends (matplotlib skips labels that start with "_")."""
-    for ax in figure.axes:
-        for handle in ax.get_legend_handles_labels()[0]:
-            handle.set_label("_" + handle.get_label())
 
 
 class TwoPanels:
@@ -209,7 +203,8 @@ class Explorer:
         self._clear()
         self.draw(self.ax, state)
         if self.key_in_readout:
-            _unlabel_series(self.figure)
+            for ax in self.figure.axes:
+                hide_from_legend(ax)
         self.readout.value = self.describe(state)
         self._render()
         self.state = state

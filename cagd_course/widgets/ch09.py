@@ -26,7 +26,7 @@ from cagd_ref.roots import (
     wilkinson_polynomial,
 )
 
-from ..plotting._style import finish_planar
+from ..plotting._style import finish_planar, hide_from_legend
 from ..plotting.curves import plot_bezier, plot_control_polygon
 from ..plotting.roots import mark_roots, plot_conditioning, plot_explicit, plot_march_step, plot_root_errors
 from ._base import Explorer, TwoPanels, _slider
@@ -194,8 +194,7 @@ class ConditioningExplorer(TwoPanels, Explorer):
         lower.set_position([0.14, 0.07, 0.82, 0.25])
         plot_conditioning(lower, self.degrees, self.largest, highlight=state["degree"])
         lower.set_ylim(1e-17, 1)
-        for line in lower.get_legend_handles_labels()[0]:
-            line.set_label("_" + line.get_label())  # the same two series as above: the legend there names them
+        hide_from_legend(lower)  # the same two series as above: the legend there names them
 
     def describe(self, state: dict) -> str:
         largest = state["largest"]

@@ -164,3 +164,17 @@ def test_vector_3d_uses_a_quiver():
 def test_vector_rejects_wrong_dimension(ax):
     with pytest.raises(ValueError, match="vector"):
         plotting.plot_vector(ax, [0, 0], [1, 2, 3])
+
+
+def test_hide_from_legend_keeps_a_panel_out_of_legends_and_leaves_the_others():
+    figure = Figure()
+    first, second = figure.subplots(1, 2)
+    for ax in (first, second):
+        ax.plot([0, 1], [0, 1], label="curve")
+        ax.scatter([0, 1], [1, 0], label="points")
+        ax.plot([0, 1], [1, 1], label=None)  # a series with no label at all is left alone
+    assert plotting.hide_from_legend(second) is second
+    assert second.get_legend_handles_labels() == ([], [])
+    assert first.get_legend_handles_labels()[1] == ["curve", "points"]
+    with pytest.raises(TypeError, match="ax"):
+        plotting.hide_from_legend(figure)
