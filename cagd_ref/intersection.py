@@ -21,6 +21,8 @@ from math import comb
 
 import numpy as np
 
+from . import _clipping
+from ._clipping import OVERLAP_CHECK_AFTER, SLACK, THIN, TINY
 from ._validation import as_count, as_float_array, as_line, as_points, as_scalar, as_tolerance, as_vector, as_weights
 from .bezier import elevate, evaluate, hodograph, subdivide, to_homogeneous
 from .geometry import join, normalize_line
@@ -59,18 +61,17 @@ __all__ = [
 # Fat lines are widened by this much (times the size of the picture) so that
 # rounding in the subdivided control points never clips away a true intersection.
 PAD = 1e-12
-# Kept ranges are widened by a few ulps, so that rounding in a crossing never cuts off an end point.
-SLACK = 4 * np.finfo(float).eps
+# Kept ranges are widened by a few ulps (SLACK), so that rounding in a crossing never cuts off an end
+# point. A stalled pair of pieces smaller than TINY (times the size of the picture) whose fat lines
+# are no wider than THIN pads lie within rounding of each other: a tangential intersection. After
+# OVERLAP_CHECK_AFTER clipping rounds, check once whether the curves share a piece. (Shared with
+# the engine of `intersect_curves`, `_clipping`, where they are set.)
 # A clip that keeps more than this fraction of both parameter ranges is stalling
 # (several intersections, or a tangency): split the longer curve instead (§7.7.5).
 STALL = 0.8
-# A stalled pair of pieces smaller than TINY (times the size of the picture) whose fat lines are
-# no wider than THIN pads lie within rounding of each other: a tangential intersection.
-TINY = 1e-6
-THIN = 8
 MAX_STEPS = 20_000
-# After this many clipping rounds, check once whether the curves share a piece.
-OVERLAP_CHECK_AFTER = 500
+# The smallest tol `intersect_curves` accepts: a few units in the last place of a parameter near 1.
+TOL_FLOOR = 1e-15
 # The subdivision-type searches give up after this many pairs of pieces.
 MAX_PAIRS = 200_000
 
@@ -1078,18 +1079,30 @@ def intersect_curves(p, q, tol: float = 1e-9, p_weights=None, q_weights=None, ma
     """Every intersection (t, u) of two planar Bézier curves by Bézier clipping: (k, 2), sorted by t, u. Notes §7.7.
 
     p: (n+1, 2), q: (m+1, 2), degrees >= 1; p_weights, q_weights: None
-    (polynomial) or positive weights of a rational curve. Each round clips
-    every live pair of pieces at once, in NumPy arrays: P against the fat
-    line of Q and Q against the fat line of P (with perpendicular=True also
-    against the perpendicular fat lines, and the ranges intersected); a round
-    that removes less than 20 % of both ranges splits the curve with the
-    longer parameter range in two (§7.7.5). (`clip_trace` shows the same
-    search one pair and one clip at a time, Q clipped against the clipped P.)
-    A pair whose ranges are both narrower than tol is an intersection. Found
-    pieces that touch (an intersection on a split point, or the many pieces
-    of a tangential intersection) are reported once; shared end points come
-    out exactly. Transversal intersections are accurate to within tol in t and
-    u; tangential ones to about the square root of the rounding level. No
+    (polynomial) or positive weights of a rational curve. The search is the
+    clipping of §7.7 that `clip_trace` shows one clip at a time: P against
+    the fat line of Q, then Q against that of the clipped P (with
+    perpendicular=True also against the perpendicular fat lines), and a
+    round that keeps too much of both ranges splits the longer one (§7.7.5).
+    Once two pieces can cross at most once (their tangent directions are
+    separated) or both ranges are narrower than tol, Newton's method on
+    P(t) = Q(u) finishes the intersection. What comes back:
+
+    * a crossing, to within tol in t and u. tol must be at least 1e-15 (the
+      spacing of doubles near 1 is 1.1e-16): ValueError below. When the
+      rounding of P(t) - Q(u) could exceed tol/4, the last Newton step uses
+      compensated arithmetic, which leaves a few units in the last place;
+    * an intersection at an end of a curve (a shared end point), exactly at
+      0 or 1;
+    * a tangency (the curves touch), once: Newton's method on the tangency
+      system (parallel tangents, P(t) - Q(u) normal to Q) gives about 1e-15
+      where the curvatures differ; where they agree too (a triple contact)
+      that system is singular and the middle of the stretch over which the
+      curves stay together is reported, to about 1e-7.
+
+    Curves that come closer than 8e-12 times the size of the picture (the
+    largest coordinate, measured from P0) count as touching, and intersections closer than tol in both t and u, or with
+    the curves that close all the way between them, are reported once. No
     intersection: an empty (0, 2) array. Curves that share a piece have no
     isolated intersections: ValueError. After max_steps clipping rounds the
     search gives up with a RuntimeError.
@@ -1100,12 +1113,78 @@ def intersect_curves(p, q, tol: float = 1e-9, p_weights=None, q_weights=None, ma
     >>> np.round(intersect_curves(p, q), 9).tolist()
     [[0.429289175, 0.548961333]]
     """
-    pts_p, pts_q, hp, hq = _curve_pair(p, q, p_weights, q_weights)
-    tol = as_tolerance(tol, below_one=True)
-    max_steps = as_count(max_steps, "max_steps", minimum=1)
-    boxes = _batched_search(hp, hq, tol, max_steps, perpendicular, lambda: _raise_if_overlapping(hp, hq),
-                            _scale(pts_p, pts_q))
-    return _merge_boxes(boxes, tol, pts_p, pts_q, p_weights, q_weights)
+    if type(tol) is not float or not TOL_FLOOR <= tol < 1.0:
+        tol = as_tolerance(tol, below_one=True)
+        if tol < TOL_FLOOR:
+            raise ValueError(f"tol: {tol:g} is below 1e-15, finer than double precision can place a parameter "
+                             "(doubles near 1 are 1.1e-16 apart); ask for tol >= 1e-15")
+    if type(max_steps) is not int or max_steps < 1:
+        max_steps = as_count(max_steps, "max_steps", minimum=1)
+    polynomial = p_weights is None and q_weights is None
+    lists = (_planar_lists(p), _planar_lists(q)) if polynomial else (None, None)
+    if lists[0] is None or lists[1] is None:
+        pts_p, pts_q, hp, hq = _curve_pair(p, q, p_weights, q_weights)
+        lists = (pts_p.T.tolist(), pts_q.T.tolist())
+        weights = [None if p_weights is None else hp[:, 2].tolist(), None if q_weights is None else hq[:, 2].tolist()]
+    else:
+        weights = [None, None]
+    # Both curves are moved so that P0 is the origin: the rounding of every evaluation then scales with the
+    # size of the curves rather than with their distance from the origin.
+    given = [(xs, ys, ws) for (xs, ys), ws in zip(lists, weights)]
+    x0, y0 = lists[0][0][0], lists[0][1][0]
+    curves = []
+    for (xs, ys), ws in zip(lists, weights):
+        xs, ys = [x - x0 for x in xs], [y - y0 for y in ys]
+        if ws is not None:
+            xs, ys = [x * w for x, w in zip(xs, ws)], [y * w for y, w in zip(ys, ws)]
+        curves.append((xs, ys, ws))
+    scale = 1e-300  # the size of the picture: the largest coordinate (Cartesian, for a rational curve)
+    for xs, ys, ws in curves:
+        size = max(max(xs), -min(xs), max(ys), -min(ys))
+        scale = max(scale, size if ws is None else size / min(ws))
+
+    def overlap_check():
+        _raise_if_overlapping(*(_homogeneous_array(c) for c in curves))
+
+    search_tol = max(tol, _clipping.FLOOR)
+    try:
+        if polynomial:  # on Python floats: faster than the batched search at every degree (3 to 25 measured)
+            (px, py, _), (qx, qy, _) = curves
+            boxes, crossings, contacts = _clipping.search(px, py, qx, qy, search_tol, max_steps, perpendicular,
+                                                          scale, PAD * scale, overlap_check)
+        else:
+            found = _batched_search(*(_homogeneous_array(c) for c in curves), search_tol, max_steps, perpendicular,
+                                    overlap_check, scale)
+            boxes, crossings, contacts = [tuple(row[:4]) + (bool(row[4]),) for row in found.tolist()], [], []
+    except _clipping.GaveUp as stop:
+        raise RuntimeError(
+            f"intersect_curves: gave up after {stop.steps} clipping rounds, still working near "
+            f"t = {stop.t:.9g}, u = {stop.u:.9g}; the curves may touch there to high order or overlap a "
+            "little (raise max_steps or tol)"
+        ) from None
+    found = _clipping.resolve(boxes, crossings, contacts, curves[0], curves[1], tol, scale, PAD * scale,
+                              overlap_check, given)
+    return np.array(found, dtype=float).reshape(-1, 2)
+
+
+def _planar_lists(points) -> list | None:
+    """[xs, ys] of finite planar control points (n+1, 2), n >= 1, or None: then the full checks say what is wrong."""
+    try:
+        array = np.asarray(points, dtype=float)
+    except (TypeError, ValueError):
+        return None
+    if array.ndim != 2 or array.shape[1] != 2 or array.shape[0] < 2:
+        return None
+    xs, ys = array.T.tolist()
+    if (sum(xs) + sum(ys)) * 0.0 != 0.0:  # NaN or infinity (or an overflow: the full checks decide)
+        return None
+    return [xs, ys]
+
+
+def _homogeneous_array(curve) -> np.ndarray:
+    """(xs, ys, ws) lists -> homogeneous rows (w x, w y, w), (n+1, 3)."""
+    xs, ys, ws = curve
+    return np.column_stack([xs, ys, np.ones(len(xs)) if ws is None else ws])
 
 
 def clip_trace(p, q, tol: float = 1e-9, p_weights=None, q_weights=None, max_steps: int = MAX_STEPS,
@@ -1164,8 +1243,9 @@ def search_steps(p, q, method: str = "clipping", tol: float = 1e-9) -> list[Sear
 # --- the batched search of intersect_curves: every live pair of pieces clipped at once ----------------
 #
 # The plain search above takes one pair of pieces at a time and one NumPy step per clip, which is
-# what the chapter shows and `clip_trace` records. `intersect_curves` runs the same clipping on all
-# live pairs of pieces together: the state is only the parameter ranges, (2, K) arrays lo and hi
+# what the chapter shows and `clip_trace` records. For polynomial curves `intersect_curves` runs it
+# on Python floats (`_clipping.search`); for rational curves it runs the same clipping on all live
+# pairs of pieces together, here: the state is only the parameter ranges, (2, K) arrays lo and hi
 # (row 0 for P, row 1 for Q, one column per pair of pieces); each round rebuilds every piece from
 # the original curve, takes every fat line, clips every piece against its partner's and splits the
 # stalled pairs, each as a few operations on whole arrays. Both curves of a pair are clipped against
@@ -1287,7 +1367,11 @@ def _batch_kept(s: np.ndarray, n: int) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _batched_search(hp, hq, tol, max_steps, perpendicular=True, overlap_check=None, scale=None) -> np.ndarray:
-    """The boxes (k, 4) = (t_lo, t_hi, u_lo, u_hi) found by Bézier clipping all live pairs of pieces at once."""
+    """The boxes (k, 5) = (t_lo, t_hi, u_lo, u_hi, tangent) found by clipping all live pairs of pieces at once.
+
+    tangent is 1.0 for the box of a stalled pair of pieces that are tiny and flat to rounding (a tangency),
+    0.0 for a pair narrowed below tol.
+    """
     folded, n, curves = _batch_curves(hp, hq)
     scale = _scale(hp[:, :2] / hp[:, 2:], hq[:, :2] / hq[:, 2:]) if scale is None else scale
     pad = PAD * scale
@@ -1300,17 +1384,13 @@ def _batched_search(hp, hq, tol, max_steps, perpendicular=True, overlap_check=No
                 checked = True
                 overlap_check()
             if steps > max_steps:
-                raise RuntimeError(
-                    f"intersect_curves: gave up after {max_steps} clipping rounds, still working near "
-                    f"t = {lo[0, 0]:.9g}, u = {lo[1, 0]:.9g}; the curves may touch there to high order or overlap a "
-                    "little (raise max_steps or tol)"
-                )
+                raise _clipping.GaveUp(max_steps, float(lo[0, 0]), float(lo[1, 0]))
             width = hi - lo
             narrow = width <= tol
             if np.count_nonzero(narrow):
                 done = narrow[0] & narrow[1]
                 if np.count_nonzero(done):
-                    boxes.append(np.concatenate([lo[:, done], hi[:, done]]))
+                    boxes.append(np.concatenate([lo[:, done], hi[:, done], np.zeros((1, np.count_nonzero(done)))]))
                     live = ~done
                     lo, hi, width, narrow = lo[:, live], hi[:, live], width[:, live], narrow[:, live]
                     if not lo.shape[1]:
@@ -1335,9 +1415,9 @@ def _batched_search(hp, hq, tol, max_steps, perpendicular=True, overlap_check=No
             if np.count_nonzero(stalled):
                 lo, hi = _batch_split(lo, hi, stalled, folded, n, scale, pad, boxes)
     if not boxes:
-        return np.zeros((0, 4))
-    found = np.concatenate(boxes, axis=1)  # rows t_lo, u_lo, t_hi, u_hi
-    return found[[0, 2, 1, 3]].T
+        return np.zeros((0, 5))
+    found = np.concatenate(boxes, axis=1)  # rows t_lo, u_lo, t_hi, u_hi, tangent
+    return found[[0, 2, 1, 3, 4]].T
 
 
 def _batch_split(lo, hi, stalled, folded, n, scale, pad, boxes):
@@ -1351,7 +1431,7 @@ def _batch_split(lo, hi, stalled, folded, n, scale, pad, boxes):
         width = _batch_fat_lines(pieces[:, tiny], pad, False)[1] + 2 * pad  # the padded band, as `_bands`
         found[np.flatnonzero(tiny)[np.all(width <= THIN * pad, axis=0)]] = True
     if np.count_nonzero(found):
-        boxes.append(np.concatenate([lo[:, rows[found]], hi[:, rows[found]]]))
+        boxes.append(np.concatenate([lo[:, rows[found]], hi[:, rows[found]], np.ones((1, np.count_nonzero(found)))]))
     split = rows[~found]
     longer = (hi[1, split] - lo[1, split] > hi[0, split] - lo[0, split]).astype(int)  # ties split P
     columns = np.arange(len(split))
@@ -1364,31 +1444,39 @@ def _batch_split(lo, hi, stalled, folded, n, scale, pad, boxes):
             np.concatenate([hi[:, keep], first_hi, hi[:, split]], axis=1))
 
 
-def _raise_if_overlapping(hp: np.ndarray, hq: np.ndarray, samples: int = 201, fine: int = 4001) -> None:
-    """ValueError if a run of P's sample points covering 1 % of [0, 1] lies on Q (within what sampling can tell)."""
-    ts = np.linspace(0.0, 1.0, samples)
-    dense = bernstein_horner(hq, np.linspace(0.0, 1.0, fine))
-    dense = dense[:, :2] / dense[:, 2:]
-    values = bernstein_horner(hp, ts)
+def _raise_if_overlapping(hp: np.ndarray, hq: np.ndarray, samples: int = 201, coarse: int = 401) -> None:
+    """ValueError if a run of P's sample points covering 1 % of [0, 1] lies on Q (within 1e-9 of the picture).
+
+    Each of P's `samples` points is matched with the nearest of `coarse` points of Q, then moved to its
+    nearest point on Q by Newton's method on (Q(u) - X) · Q'(u) = 0, all points at once.
+    """
+    values = bernstein_horner(hp, np.linspace(0.0, 1.0, samples))
     values = values[:, :2] / values[:, 2:]
+    us = np.linspace(0.0, 1.0, coarse)
+    dense = bernstein_horner(hq, us)
+    dense = dense[:, :2] / dense[:, 2:]
     scale = _scale(dense, values)
-    # The polyline through Q's samples deviates from Q by at most flatness / (fine - 1)², plus rounding.
-    limit = 4 * _flatness(hq[:, :2] / hq[:, 2:]) / (fine - 1) ** 2 + 1e-9 * scale
-    near = _polyline_distances(values, dense) <= limit
+    u = us[np.argmin(((values[:, None, :] - dense[None, :, :]) ** 2).sum(axis=2), axis=1)]
+    first = hodograph(hq)
+    second = hodograph(first)
+    for _ in range(4):
+        h, dh, ddh = (bernstein_horner(c, u) for c in (hq, first, second))
+        w, dw, ddw = h[:, 2:], dh[:, 2:], ddh[:, 2:]
+        point = h[:, :2] / w
+        tangent = (dh[:, :2] - dw * point) / w
+        curvature = (ddh[:, :2] - 2 * dw * tangent - ddw * point) / w
+        gap = point - values
+        slope = np.einsum("ij,ij->i", tangent, tangent) + np.einsum("ij,ij->i", gap, curvature)
+        step = np.einsum("ij,ij->i", gap, tangent) / np.where(slope > 0, slope, np.inf)
+        u = np.clip(u - step, 0.0, 1.0)
+    foot = bernstein_horner(hq, u)
+    near = np.hypot(*(foot[:, :2] / foot[:, 2:] - values).T) <= 1e-9 * scale
     run = longest = 0
     for flag in near:
         run = run + 1 if flag else 0
         longest = max(longest, run)
     if longest >= 3:
         raise ValueError("p, q: the curves overlap (they share a piece), so their intersections are not isolated")
-
-
-def _polyline_distances(points: np.ndarray, polyline: np.ndarray) -> np.ndarray:
-    start, edge = polyline[:-1], np.diff(polyline, axis=0)
-    lengths = np.einsum("ij,ij->i", edge, edge)
-    rel = points[:, None, :] - start[None]
-    s = np.clip(np.einsum("kij,ij->ki", rel, edge) / np.where(lengths > 0, lengths, 1), 0, 1)
-    return np.linalg.norm(rel - s[..., None] * edge, axis=2).min(axis=1)
 
 
 def _merge_boxes(boxes, tol, p, q, p_weights, q_weights) -> np.ndarray:

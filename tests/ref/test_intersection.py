@@ -6,9 +6,13 @@ circular points, a fat line holds its curve, a clip never cuts away a point of
 the curve that lies in the band, the V rule never clips more than the hull),
 and against independent peers: exact fractions for the clipping examples,
 SymPy resultants and the `bezier` package for the intersections, SciPy's
-linear programming for the hull of a clip. The batched search that
-`intersect_curves` runs is checked against the plain one-pair-at-a-time
-stepper of `clip_trace`, piece by piece, clip by clip and result by result.
+linear programming for the hull of a clip. `intersect_curves` runs one of two
+engines, Bézier clipping on Python floats (`_clipping`, polynomial curves of
+low degree) or the batched NumPy search (rational curves, high degrees); both
+are checked against each other and against the plain one-pair-at-a-time
+stepper of `clip_trace`, and their results against 50-digit Newton solutions
+(mpmath) at tol 1e-9, 1e-12 and 1e-14. The `bezier` package's functional suite
+is run in test_intersection_suite.py.
 """
 
 from __future__ import annotations
@@ -813,6 +817,104 @@ def test_results_are_sorted_and_within_tol():
     np.testing.assert_allclose(swapped, exact[np.argsort(exact[:, 1])][:, ::-1], atol=1e-11)
 
 
+def _reference(p, q, t, u, p_weights=None, q_weights=None):
+    """(t, u) refined by Newton's method in 50 digits (mpmath) on the exact curves given by the doubles."""
+    mp = pytest.importorskip("mpmath").mp
+    mp.dps = 50
+
+    def curve(points, weights):
+        n = len(points) - 1
+        w = [mp.mpf(1)] * (n + 1) if weights is None else [mp.mpf(float(v)) for v in weights]
+        rows = [[mp.mpf(float(c)) for c in point] for point in points]
+
+        def value(s):
+            basis = [mp.binomial(n, i) * (1 - s) ** (n - i) * s**i * w[i] for i in range(n + 1)]
+            total = sum(basis)
+            return [sum(b * row[k] for b, row in zip(basis, rows)) / total for k in (0, 1)]
+        return value
+
+    fp, fq = curve(p, p_weights), curve(q, q_weights)
+    root = mp.findroot(lambda a, b: [fp(a)[k] - fq(b)[k] for k in (0, 1)], (mp.mpf(float(t)), mp.mpf(float(u))))
+    return float(root[0]), float(root[1])
+
+
+@pytest.mark.parametrize("tol", [1e-9, 1e-12, 1e-14])
+def test_crossings_are_within_tol_of_50_digit_solutions(tol):
+    rng = np.random.default_rng(94)
+    checked = 0
+    for trial in range(24):
+        n, m = rng.integers(1, 6, 2)
+        p = rng.uniform(-1, 1, (n + 1, 2)) * 10.0 ** rng.integers(-2, 3) + rng.uniform(-5, 5, 2)
+        q = p.mean(axis=0) + rng.uniform(-1, 1, (m + 1, 2)) * np.ptp(p, axis=0).max()
+        weights = {}
+        if trial % 3 == 2:
+            weights = {"p_weights": rng.uniform(0.3, 3, n + 1), "q_weights": rng.uniform(0.3, 3, m + 1)}
+        found = x.intersect_curves(p, q, tol=tol, **weights)
+        for t, u in found:
+            if 0 < t < 1 and 0 < u < 1:
+                exact = _reference(p, q, t, u, weights.get("p_weights"), weights.get("q_weights"))
+                assert abs(t - exact[0]) <= tol and abs(u - exact[1]) <= tol, (trial, t - exact[0], u - exact[1])
+                checked += 1
+    assert checked >= 20
+
+
+def test_at_a_small_tol_crossings_come_to_a_few_units_in_the_last_place():
+    # Nearly parallel lines far from the origin (the conditioning of case 51 of the bezier suite, made
+    # worse): double-precision Newton alone is off by many units; the compensated last step is not.
+    p = np.array([[1000.0, 1000.0], [1001.0, 1001.0]])
+    q = np.array([[1000.0 + 2.0**-10, 1000.0 - 2.0**-10], [1001.0 - 2.0**-10, 1001.0 + 2.0**-10]])
+    found = x.intersect_curves(p, q, tol=1e-15)
+    exact = _reference(p, q, *found[0])
+    assert np.all(np.abs(found[0] - exact) <= 2 * np.spacing(np.abs(exact)))
+    rational = x.intersect_curves(p, q, tol=1e-15, p_weights=[1.0, 3.0], q_weights=[2.0, 1.0])
+    exact = _reference(p, q, *rational[0], [1.0, 3.0], [2.0, 1.0])
+    assert np.all(np.abs(rational[0] - exact) <= 4 * np.spacing(np.abs(exact)))
+
+
+@pytest.mark.parametrize("p, q, expected", [
+    ([(0.0, 0.0), (1.0, 0.0), (2.0, 1.0)], [(-1.0, 0.0), (0.0, 0.0)], [[0.0, 1.0]]),  # tangent at a shared end
+    ([(0.0, 0.0), (1.0, 0.0), (2.0, 1.0)], [(-1.0, 0.0), (1.0, 0.0)], [[0.0, 0.5]]),  # an end on the tangent
+    ([(1.0, 0.0), (1.0, 1.0), (0.0, 1.0)], [(1.0, 0.0), (1.0, 1.5), (-0.5, 1.5)], [[0.0, 0.0]]),  # bezier #43
+])
+def test_tangent_end_points_come_out_exactly(p, q, expected):
+    for tol in (1e-9, 1e-12, 1e-14):
+        assert x.intersect_curves(p, q, tol=tol).tolist() == expected
+
+
+def test_a_tangency_is_refined_on_the_tangency_system_whatever_the_tol():
+    # y = x² and y = 2x²: parabolas touching at t = u = 1/2 with different curvatures; and the asymmetric
+    # tangency of a cubic on the x-axis at t = 0.3.
+    p, q = [(-1.0, 1.0), (0.0, -1.0), (1.0, 1.0)], [(-1.0, 2.0), (0.0, -2.0), (1.0, 2.0)]
+    xs = power_to_bernstein(np.array([0.0, 1.0, 0.4, 0.0]))
+    ys = power_to_bernstein(np.array([0.09, -0.6, 1.0, 0.0]))
+    for tol in (1e-4, 1e-9, 1e-15):
+        found = x.intersect_curves(p, q, tol=tol)
+        assert found.shape == (1, 2)
+        np.testing.assert_allclose(found, [[0.5, 0.5]], atol=1e-15)
+        found = x.intersect_curves(np.column_stack([xs, ys]), [(-1.0, 0.0), (3.0, 0.0)], tol=tol)
+        assert found.shape == (1, 2)
+        np.testing.assert_allclose(found, [[0.3, (0.3 + 0.4 * 0.09 + 1) / 4]], atol=1e-15)
+
+
+def test_the_two_engines_agree():
+    # Polynomial curves are clipped on Python floats; the same curves given unit weights are rational
+    # ones and go through the batched NumPy search (and the rational evaluation). Both agree.
+    rng = np.random.default_rng(95)
+    pairs = [(rng.uniform(-1, 1, (n + 1, 2)), rng.uniform(-1, 1, (m + 1, 2)))
+             for n, m in rng.integers(1, 9, (40, 2))]
+    pairs += [
+        ([(0.0, 1.0), (0.5, -1.0), (1.0, 1.0)], [(0.0, 0.0), (1.0, 0.0)]),  # a tangency
+        ([(0.0, 0.0), (1.0, 2.0), (3.0, 2.0), (4.0, 0.0)], [(4.0, 0.0), (5.0, -2.0), (6.0, 1.0)]),  # G1 joint
+        example("five_intersections").args("p", "q"),
+    ]
+    scalar = [x.intersect_curves(p, q) for p, q in pairs]
+    batched = [x.intersect_curves(p, q, p_weights=np.ones(len(p)), q_weights=np.ones(len(q))) for p, q in pairs]
+    for a, b in zip(scalar, batched):
+        assert a.shape == b.shape
+        np.testing.assert_allclose(a, b, atol=1e-12)
+    assert sum(len(a) for a in scalar) >= 30
+
+
 def _plain_intersections(p, q, tol=1e-9, p_weights=None, q_weights=None, perpendicular=True):
     """The same search one pair of pieces and one clip at a time: the stepper `clip_trace` records."""
     pts_p, pts_q, hp, hq = x._curve_pair(p, q, p_weights, q_weights)
@@ -904,6 +1006,8 @@ def test_batched_clips_agree_with_the_plain_clip():
     (dict(p=[(0.0, 0.0), (1.0, 1.0)], q=[(0.0, 1.0), (1.0, 0.0)], q_weights=[1.0, -1.0]), "^q_weights"),
     (dict(p=[(0.0, 0.0), (1.0, 1.0)], q=[(0.0, 1.0), (1.0, 0.0)], p_weights=[1.0]), "^p_weights"),
     (dict(p=[(0.0, 0.0), (1.0, 1.0)], q=[(0.0, 1.0), (1.0, 0.0)], tol=0.0), "^tol"),
+    (dict(p=[(0.0, 0.0), (1.0, 1.0)], q=[(0.0, 1.0), (1.0, 0.0)], tol=1e-16), "^tol: 1e-16 is below 1e-15"),
+    (dict(p=[(0.0, 0.0), (1.0, np.nan)], q=[(0.0, 1.0), (1.0, 0.0)]), "^p: expected finite"),
 ])
 def test_bad_input_is_rejected(kwargs, message):
     with pytest.raises(ValueError, match=message):
