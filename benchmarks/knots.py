@@ -17,6 +17,7 @@ from cagd_ref.bspline import bezier_end_knots, bezier_segments, insert_knot, to_
 from . import peers
 from .common import Candidate, Case, Plan, compare, max_difference, progress, record
 from .evaluation import SEED, _summary
+from .targets import Verdict
 
 INSERTED = (5**0.5 - 1) / 2
 
@@ -26,6 +27,7 @@ SCIPY_INSERT = "SciPy insert_knot"
 SCIPY_EXTRACT = "SciPy insert_knot, repeated"
 GEOMDL_INSERT = "geomdl insert_knot"
 GEOMDL_EXTRACT = "geomdl decompose_curve"
+TIME_FACTOR = 2  # the target: within 2x of SciPy at every size measured
 
 
 def knot_cases(plan: Plan) -> list[Case]:
@@ -73,3 +75,19 @@ def knot_cases(plan: Plan) -> list[Case]:
             progress(f"[knots] {operation}, degree {n}, {count} control points: {_summary(case)}")
             cases.append(case)
     return cases
+
+
+def verdicts(found: list[Case]) -> list[Verdict]:
+    """Insertion and extraction each within TIME_FACTOR x SciPy's time, at the worst size measured."""
+    judged = []
+    for operation, ours, scipy in (("insertion", INSERT, SCIPY_INSERT), ("extraction", EXTRACT, SCIPY_EXTRACT)):
+        target = f"knot {operation} within {TIME_FACTOR}× of SciPy at every size measured"
+        ratios = [(case, case.get(ours).seconds / case.get(scipy).seconds) for case in found
+                  if case.params["operation"] == operation and case.get(scipy) and case.get(scipy).seconds]
+        if not ratios:
+            judged.append(Verdict(target, "—", None, "SciPy not measured"))
+            continue
+        case, worst = max(ratios, key=lambda item: item[1])
+        judged.append(Verdict(target, f"{worst:.2f}× at worst", worst <= TIME_FACTOR,
+                              f"worst at {case.params['control points']} control points"))
+    return judged

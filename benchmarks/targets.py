@@ -126,12 +126,14 @@ def roots_speed(cases: list[Case]) -> Verdict:
 
 
 def verdicts(results: dict) -> list[Verdict]:
+    from .knots import verdicts as knots_vs_scipy
     from .topics import TOPICS, topic
 
     found = [
         bspline_vs_scipy(results.get("bspline", [])),
         bspline_vs_geomdl(results.get("bspline", [])),
         bezier_vs_package(results.get("bezier", [])),
+        *knots_vs_scipy(results.get("knots", [])),
         roots_accuracy(results.get("roots", [])),
         roots_speed(results.get("roots", [])),
     ]

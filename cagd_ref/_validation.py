@@ -7,6 +7,7 @@ input is reported with the argument's name, what was expected and what came.
 
 from __future__ import annotations
 
+import math
 import numbers
 
 import numpy as np
@@ -26,7 +27,7 @@ def as_float_array(value, name: str) -> np.ndarray:
         array = np.array(value, dtype=float)
     except (TypeError, ValueError) as err:
         raise TypeError(f"{name}: expected numbers, got {_describe(value)} ({err})") from None
-    if not np.all(np.isfinite(array)):
+    if not np.isfinite(array).all():
         raise ValueError(f"{name}: expected finite numbers, got NaN or infinity in {_describe(value)}")
     return array
 
@@ -112,6 +113,11 @@ def as_count(value, name: str, minimum: int = 0) -> int:
 
 def as_scalar(value, name: str) -> float:
     """One finite real number."""
+    if type(value) in (float, int):  # the common case, without an array round trip
+        number = float(value)
+        if not math.isfinite(number):
+            raise ValueError(f"{name}: expected finite numbers, got NaN or infinity in {_describe(value)}")
+        return number
     array = as_float_array(value, name)
     if array.ndim != 0:
         raise ValueError(f"{name}: expected a single number, got shape {array.shape}")

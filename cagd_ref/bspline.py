@@ -66,7 +66,7 @@ def _as_knots(knots, name: str = "knots") -> np.ndarray:
     kn = as_float_array(knots, name)
     if kn.ndim != 1:
         raise ValueError(f"{name}: expected a 1-D knot vector, got shape {kn.shape}")
-    if np.any(np.diff(kn) < 0):
+    if (kn[1:] < kn[:-1]).any():
         raise ValueError(f"{name}: expected a non-decreasing sequence, got {kn.tolist()}")
     return kn
 
@@ -80,11 +80,12 @@ def _check_knots(kn: np.ndarray, n: int, name: str = "knots") -> None:
     c = len(kn) - n + 1
     if not kn[n - 1] < kn[c - 1]:
         raise ValueError(f"{name}: the domain [{kn[n - 1]}, {kn[c - 1]}] = [t_(n-1), t_(c-1)] is empty")
-    values, counts = np.unique(kn, return_counts=True)
-    if np.any(counts > n):
-        bad = values[counts > n][0]
+    # Sorted knots: a value appears more than n times exactly when t_i = t_(i+n) for some i (one pass, no sort).
+    repeated = kn[n:] == kn[:-n]
+    if np.any(repeated):
+        bad = kn[n:][repeated][0]
         raise ValueError(
-            f"{name}: the knot {bad} appears {counts[counts > n][0]} times, more than the degree {n}"
+            f"{name}: the knot {bad} appears {np.count_nonzero(kn == bad)} times, more than the degree {n}"
         )
 
 
@@ -270,10 +271,13 @@ def insert_knot(points, knots, t) -> tuple[np.ndarray, np.ndarray]:
     """
     pts, kn, n = _spline(points, knots)
     tau = as_scalar(t, "t")
-    _in_domain(np.array([tau]), kn, n)
+    a, b = kn[n - 1], kn[len(kn) - n]
+    if not a <= tau <= b:
+        raise ValueError(f"t: expected values in the domain [{a}, {b}], got [{tau}]")
     if np.count_nonzero(kn == tau) >= n:
         raise ValueError(f"t: the knot {tau} already has multiplicity {n} = degree, the most allowed")
-    j = int(_spans(kn, n, np.array([tau]))[0])
+    # the span [t_j, t_(j+1)) holding t; at the end of the domain, the last span of positive length
+    j = int(np.searchsorted(kn, tau, side="left" if tau == b else "right")) - 1
     m = np.arange(j - n + 2, j + 2)
     alpha = ((tau - kn[m - 1]) / (kn[m + n - 1] - kn[m - 1]))[:, None]
     new_points = (1 - alpha) * pts[m - 1] + alpha * pts[m]
@@ -294,9 +298,11 @@ def insert_knots(points, knots, ts) -> tuple[np.ndarray, np.ndarray]:
 def bezier_segments(points, knots) -> np.ndarray:
     """Bézier control points of every segment of positive length, in order: shape (s, n+1, d). Notes §6.3, §6.7.
 
-    Every distinct knot value in the domain is inserted until it has
-    multiplicity n; then the n+1 control points of each span [a, b] carry the
-    polar labels f(a, ..., a, b, ..., b), which are its Bézier control points.
+    The Bézier control points of the span [a, b] are the polar values
+    f(a, ..., a, b, ..., b) (n - i times a, i times b): what inserting every
+    knot until it has multiplicity n would leave there (§6.7). All of them
+    come from one polar de Boor triangle per span, evaluated for every span
+    and label at once, instead of one insertion after another.
 
     >>> from cagd_ref.bspline import bezier_segments
     >>> refined = [(1, 1), (1, 2.5), (2.5, 5.5), (5.5, 5.5), (7, 2.5), (7, 1)]   # §6.7: the quartic with knot 3
@@ -309,13 +315,12 @@ def bezier_segments(points, knots) -> np.ndarray:
     Ref: W. Boehm, Inserting new knots into B-spline curves, CAD 12(4), 1980.
     """
     pts, kn, n = _spline(points, knots)
-    values, counts = np.unique(kn, return_counts=True)
-    a, b = kn[n - 1], kn[len(kn) - n]
-    inside = (values >= a) & (values <= b)
-    missing = np.repeat(values[inside], n - counts[inside])
-    pts, kn = insert_knots(pts, kn, missing)
     spans = _nonzero_spans(kn, n)
-    return _gather(pts, kn, n, spans)[0]
+    # labels[r, i] = (a, ..., a, b, ..., b) with n - i copies of a = t_j and i of b = t_(j+1), j = spans[r]
+    takes_b = np.arange(n)[None, :] >= (n - np.arange(n + 1))[:, None]
+    labels = np.where(takes_b, kn[spans + 1][:, None, None], kn[spans][:, None, None])
+    values = _segment_blossoms(pts, kn, n, np.repeat(spans, n + 1), labels.reshape(-1, n))
+    return values.reshape(len(spans), n + 1, pts.shape[1])
 
 
 def bezier_segment_intervals(knots, degree: int) -> np.ndarray:

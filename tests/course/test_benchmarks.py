@@ -79,6 +79,10 @@ def test_one_run_writes_the_report_and_the_figure(tiny_run):
     assert tiny_run["figure"].read_bytes()[:8] == PNG_SIGNATURE
     # The six core targets, the roots speed, and each chapter topic's own (with its section in the report).
     assert len(tiny_run["verdicts"]) >= 7 + len(TOPICS)
+    # Knot insertion and extraction are judged against SciPy, each on its own.
+    knots = [v for v in tiny_run["verdicts"] if v.target.startswith("knot ")]
+    assert [v.target.split()[1] for v in knots] == ["insertion", "extraction"]
+    assert all(v.met is not None and "×" in v.measured for v in knots)
     for section in TOPICS:
         assert f"## {topic(section).TITLE}" in text
         assert tiny_run["results"][section], section
