@@ -9,11 +9,11 @@ imports them. The modules, in the order of the course (module, chapters, topic):
 Part I. Curves
 
     geometry              1        points, vectors, lines, planes, rotations, conics
-    bezier                2        Bézier curves: de Casteljau, subdivision, elevation, hodographs, rational curves
+    bezier                2        de Casteljau, subdivision, elevation, hodographs, rational curves, boxes, arc length
     continuity            2        parametric and geometric continuity of joined curves, curvature combs
-    polynomials           2, 3, 9  scalar polynomials in the power and Bernstein bases, conversions, products
-    forward_differencing  4        forward differencing: many evaluations for n additions each
-    blending              5        Timmer, Ball and Overhauser curves and their Bézier forms
+    polynomials           2, 3, 9  power and Bernstein bases: Horner (with p'), conversions (on [t0, t1], rational), products
+    forward_differencing  4        n additions per value: the difference table, raster steps, adaptive steps, drift
+    blending              5        Timmer, Ball, Overhauser and Catmull-Rom curves, Bézier forms, crossing counts
     blending_properties   5        which of the six properties a set of blending functions has
     bspline               6        B-splines in polar form: de Boor, knot insertion, Bézier segments, basis
     knot_intervals        6        B-splines labelled with knot intervals, splitting and closing them

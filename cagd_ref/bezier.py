@@ -20,10 +20,11 @@ from ._validation import (
     as_parameter,
     as_points,
     as_scalar,
+    as_tolerance,
     as_vector,
     as_weights,
 )
-from .polynomials import BLOCK, bernstein_horner
+from .polynomials import BLOCK, bernstein_horner, bernstein_to_power
 
 __all__ = [
     "bernstein",
@@ -50,6 +51,9 @@ __all__ = [
     "difference_bound",
     "hausdorff_distance",
     "directed_hausdorff",
+    "extreme_parameters",
+    "bounding_box",
+    "arc_length",
 ]
 
 
@@ -615,3 +619,130 @@ def directed_hausdorff(p, q, samples: int = 1001) -> float:
 def hausdorff_distance(p, q, samples: int = 1001) -> float:
     """Symmetric Hausdorff distance max(d(P, Q), d(Q, P)) between two Bézier curves, by sampling. Notes §2.6."""
     return max(directed_hausdorff(p, q, samples), directed_hausdorff(q, p, samples))
+
+
+# --- The course's own (not in the notes), after Pomax's primer: extremes, bounding boxes, arc length.
+
+
+def _positive_weights(weights, count: int) -> np.ndarray | None:
+    if weights is None:
+        return None
+    w = as_weights(weights, count)
+    if np.any(w < 0):
+        raise ValueError(f"weights: expected positive weights (a curve that stays finite), got {w.tolist()}")
+    return w
+
+
+def _velocity_numerators(pts: np.ndarray, weights) -> np.ndarray:
+    """Power coefficients (m+1, d), one column per coordinate, of polynomials whose roots are the zeros of P'.
+
+    Polynomial curve: the hodograph itself. Rational curve P = X / w: the numerator X' w - X w' of
+    P' = (X' w - X w') / w² (the common factor 1/w² has no roots).
+    """
+    if weights is None:
+        return bernstein_to_power(hodograph(pts))
+    lifted = to_homogeneous(pts, weights)
+    x = bernstein_to_power(lifted[:, :-1])  # (n+1, d): X(t) in the power basis
+    w = bernstein_to_power(lifted[:, -1])  # (n+1,): w(t)
+    poly = np.polynomial.polynomial
+    numerators = np.zeros((2 * len(pts) - 1, pts.shape[1]))  # degree <= 2n - 1 (in fact 2n - 2)
+    for k, col in enumerate(x.T):
+        values = poly.polysub(poly.polymul(poly.polyder(col), w), poly.polymul(col, poly.polyder(w)))
+        numerators[: len(values), k] = values
+    return numerators
+
+
+def extreme_parameters(points, weights=None) -> np.ndarray:
+    """Sorted parameters in [0, 1] where a coordinate of the curve can be extreme: 0, 1 and the zeros of P'. Course.
+
+    points: (n+1, d); weights: None or (n+1,) positive. A coordinate of P(t) takes its
+    largest and smallest values on [0, 1] at t = 0, t = 1 or where its derivative vanishes:
+    the roots in (0, 1) of the coordinates of the hodograph (of X' w - X w' for a rational
+    curve). A coordinate that is constant contributes nothing. A parameter where every
+    coordinate of P' vanishes (a cusp) is among them. Not in the notes: after Pomax's
+    primer, "Extremities". Returns shape (k,), k >= 2.
+
+    >>> from cagd_ref.bezier import extreme_parameters
+    >>> extreme_parameters([(0, 0), (1, 2), (3, 2), (4, 0)]).tolist()   # y' = 6 - 12 t vanishes at 1/2
+    [0.0, 0.5, 1.0]
+
+    Ref: M. Kamermans, A Primer on Bézier Curves, https://pomax.github.io/bezierinfo/ (Extremities).
+    """
+    pts = as_points(points)
+    w = _positive_weights(weights, len(pts))
+    found = [np.array([0.0, 1.0])]
+    for column in _velocity_numerators(pts, w).T:
+        scale = np.abs(column).max()
+        if scale == 0:
+            continue  # a constant coordinate: every t is extreme, none is needed
+        coefficients = np.polynomial.polynomial.polytrim(column, tol=1e-14 * scale)
+        if len(coefficients) < 2:
+            continue
+        roots = np.polynomial.polynomial.polyroots(coefficients)
+        # A root counts as real up to a generous imaginary part: an extra candidate is harmless
+        # (it is only evaluated), a missed one would lose an extreme value.
+        real = roots.real[np.abs(roots.imag) <= 1e-6 * (1 + np.abs(roots.real))]
+        found.append(real[(real > 0) & (real < 1)])
+    ts = np.unique(np.concatenate(found))
+    return ts[np.concatenate([[True], np.diff(ts) > 1e-12])]  # a double root once
+
+
+def bounding_box(points, weights=None) -> np.ndarray:
+    """The smallest axis-aligned box holding the curve over [0, 1]: [[mins], [maxs]], shape (2, d). Course.
+
+    points: (n+1, d); weights: None or (n+1,) positive. Each coordinate's extreme values
+    are taken at the parameters of `extreme_parameters`. The box of the control points
+    (convex hull property) holds this one and is usually larger. Not in the notes: after
+    Pomax's primer, "Bounding boxes".
+
+    >>> from cagd_ref.bezier import bounding_box
+    >>> bounding_box([(0, 0), (1, 2), (3, 2), (4, 0)]).tolist()   # top at P(1/2) = (2, 1.5)
+    [[0.0, 0.0], [4.0, 1.5]]
+
+    Ref: M. Kamermans, A Primer on Bézier Curves, https://pomax.github.io/bezierinfo/ (Bounding boxes).
+    """
+    pts = as_points(points)
+    w = _positive_weights(weights, len(pts))
+    candidates = evaluate(pts, extreme_parameters(pts, w), weights=w)
+    return np.array([candidates.min(axis=0), candidates.max(axis=0)])
+
+
+# 16-point Gauss-Legendre rule on [0, 1]: exact for polynomials of degree <= 31.
+_GAUSS_NODES, _GAUSS_WEIGHTS = np.polynomial.legendre.leggauss(16)
+_GAUSS_NODES, _GAUSS_WEIGHTS = (_GAUSS_NODES + 1) / 2, _GAUSS_WEIGHTS / 2
+
+
+def arc_length(points, weights=None, tol: float = 1e-12) -> float:
+    """Length ∫₀¹ |P'(t)| dt of a polynomial or rational Bézier curve, by Gauss-Legendre quadrature. Course.
+
+    points: (n+1, d); weights: None or (n+1,) positive; tol: relative accuracy wanted.
+    The speed |P'| is smooth except where P' = 0, so [0, 1] is first cut at the
+    `extreme_parameters` (which include every zero of P'); each piece gets a 16-point
+    Gauss-Legendre rule, and all pieces are halved until two successive sums agree to
+    within tol. For a polynomial curve the result lies between the chord |P_n - P_0|
+    and the length of the control polygon. Not in the notes: after Pomax's primer,
+    "Arc length".
+
+    >>> from cagd_ref.bezier import arc_length
+    >>> round(arc_length([(0, 0), (1, 1), (2, 2)]), 12)                 # a straight quadratic: the chord √8
+    2.828427124746
+    >>> round(arc_length([(1, 0), (1, 1), (0, 1)], [1, np.sqrt(2) / 2, 1]), 12)   # a quarter of the unit circle
+    1.570796326795
+
+    Ref: M. Kamermans, A Primer on Bézier Curves, https://pomax.github.io/bezierinfo/ (Arc length).
+    """
+    pts = as_points(points)
+    w = _positive_weights(weights, len(pts))
+    tol = as_tolerance(tol, below_one=True)
+    breaks = extreme_parameters(pts, w)
+    previous = None
+    for _ in range(16):  # at most 2**15 halvings of each piece
+        lo, hi = breaks[:-1, None], breaks[1:, None]
+        ts = (lo + (hi - lo) * _GAUSS_NODES).ravel()
+        speed = np.linalg.norm(derivative(pts, ts, 1, w), axis=1).reshape(len(lo), -1)
+        total = float(((hi - lo)[:, 0] * (speed @ _GAUSS_WEIGHTS)).sum())
+        if previous is not None and abs(total - previous) <= tol * max(abs(total), 1e-300):
+            return total
+        previous = total
+        breaks = np.unique(np.concatenate([breaks, (breaks[:-1] + breaks[1:]) / 2]))
+    return total

@@ -59,8 +59,10 @@ def continuity(
     p, q: control points (m+1, d), (n+1, d), each over its own parameter interval
     (by default P on [0, 1] and Q on [1, 2]). Ck compares the derivative vectors
     up to order k; G1 asks for tangents in the same direction, G2 in addition for
-    the same curvature vector (same centre of curvature). Tolerance is relative
-    to the size of the control polygons.
+    the same curvature vector (same centre of curvature). A zero velocity on either
+    side of the joint (a degenerate end leg) is reported as G0: the geometric orders
+    are defined for non-zero velocities. Tolerance is relative to the size of the
+    control polygons.
     """
     p = as_points(p, "p")
     q = as_points(q, "q")

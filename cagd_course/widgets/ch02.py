@@ -443,7 +443,7 @@ class ContinuityExplorer(Explorer):
             "q1y": _slider(widgets.FloatSlider, "Q1 y", min=-6.0, max=6.0, step=0.05, value=q1[1]),
             "q2x": _slider(widgets.FloatSlider, "Q2 x", min=-2.0, max=10.0, step=0.05, value=6.5),
             "q2y": _slider(widgets.FloatSlider, "Q2 y", min=-6.0, max=6.0, step=0.05, value=-1.0),
-            "h": _slider(widgets.FloatSlider, "h", min=0.25, max=4.0, step=0.05, value=1.0),
+            "h": _slider(widgets.FloatSlider, "Q length", min=0.25, max=4.0, step=0.05, value=1.0),
         }
         super().__init__(controls)
 

@@ -61,6 +61,8 @@ class RasterExplorer(Explorer):
         samples = bezier_by_differences(self.points, steps)
         pixels = pixels_along(samples)
         gaps = find_gaps(pixels)
+        # How far the march ends from P_n: a rounding error, which matters where P_n lies on a pixel border.
+        end_error = float(np.abs(samples[-1] - self.points[-1]).max())
         return {
             "delta": delta,
             "steps": steps,
@@ -70,6 +72,7 @@ class RasterExplorer(Explorer):
             "pixels": pixels,
             "gaps": gaps,
             "gap_count": len(gaps),
+            "end_error": end_error,
         }
 
     def image(self, pixels: np.ndarray) -> np.ndarray:
@@ -99,8 +102,10 @@ class RasterExplorer(Explorer):
 
     def describe(self, state: dict) -> str:
         verdict = "no gaps" if state["gap_count"] == 0 else f"<b style='color:#b00'>{state['gap_count']} gaps</b>"
+        end = ("the march ends exactly at the last control point" if state["end_error"] == 0 else
+               f"the march ends {state['end_error']:.1e} px from the last control point (rounding)")
         return (f"bound δ ≤ {state['bound']:.4f}; step used 1/{state['steps']} = {state['step']:.4f}<br>"
-                f"{state['steps'] + 1} points, {len(state['pixels'])} pixels, {verdict}")
+                f"{state['steps'] + 1} points, {len(state['pixels'])} pixels, {verdict}; {end}")
 
 
 def raster_explorer(points=None, delta: float | None = None) -> RasterExplorer:
@@ -110,7 +115,8 @@ def raster_explorer(points=None, delta: float | None = None) -> RasterExplorer:
     pixels; `delta` is the starting step (default the gap-free bound
     `raster_delta(points)`). The curve is marched in ceil(1/δ) steps.
     `update(delta=...)` returns {"bound", "delta", "steps", "step",
-    "samples" (steps+1, 2), "pixels" (m, 2), "gaps" (positions), "gap_count"}.
+    "samples" (steps+1, 2), "pixels" (m, 2), "gaps" (positions), "gap_count",
+    "end_error" (largest coordinate distance of the last sample from P_n)}.
     """
     return RasterExplorer(points, delta)
 

@@ -56,7 +56,8 @@ def test_every_public_name_is_tested():
         "elevate", "hodograph", "evaluate", "derivative", "curvature", "signed_curvature", "to_homogeneous",
         "from_homogeneous", "endpoint_derivatives", "endpoint_curvature", "circular_arc",
         "reparametrize_weights", "change_interval", "explicit_bezier", "explicit_rational_bezier",
-        "difference_bound", "hausdorff_distance", "directed_hausdorff",
+        "difference_bound", "hausdorff_distance", "directed_hausdorff", "extreme_parameters", "bounding_box",
+        "arc_length",
     }
     assert set(b.__all__) == tested
 
@@ -666,6 +667,12 @@ POINTS = np.array([[0.0, 0.0], [1.0, 2.0], [3.0, 2.0], [4.0, 0.0]])
         (lambda: b.hausdorff_distance(POINTS, np.zeros((3, 3))), ValueError, "p, q"),
         (lambda: b.hausdorff_distance(POINTS, POINTS, 1), ValueError, "samples"),
         (lambda: b.directed_hausdorff(POINTS, POINTS, 10.0), TypeError, "samples"),
+        (lambda: b.extreme_parameters(POINTS, [1, 0, 1, 1]), ValueError, "weights"),
+        (lambda: b.bounding_box(POINTS, [1, -1, 1, 1]), ValueError, "weights"),
+        (lambda: b.bounding_box([]), ValueError, "points"),
+        (lambda: b.arc_length(POINTS, [1, 1, 1]), ValueError, "weights"),
+        (lambda: b.arc_length(POINTS, None, 0.0), ValueError, "tol"),
+        (lambda: b.arc_length(POINTS, None, 2.0), ValueError, "tol"),
     ],
 )
 def test_bad_input_names_the_argument(call, error, name):
@@ -683,3 +690,70 @@ def test_results_are_fresh_arrays():
         value[:] = 99
     b.de_casteljau_triangle(points, 0.5)[0][:] = 99
     np.testing.assert_array_equal(points, before)
+
+
+# --- Extreme points, bounding boxes, arc length (the course's own, after Pomax's primer) ---------------
+
+
+@pytest.mark.parametrize("seed", range(12))
+@pytest.mark.parametrize("rational", [False, True])
+def test_bounding_box_holds_the_curve_and_touches_it(seed, rational):
+    points, weights = random_curve(seed, degree=2 + seed % 5, dim=2 + seed % 2, rational=rational)
+    box = b.bounding_box(points, weights)
+    samples = b.evaluate(points, np.linspace(0, 1, 20001), weights=weights)
+    assert box.shape == (2, points.shape[1])
+    assert np.all(samples >= box[0] - 1e-12) and np.all(samples <= box[1] + 1e-12)
+    np.testing.assert_allclose(samples.min(axis=0), box[0], atol=1e-7)
+    np.testing.assert_allclose(samples.max(axis=0), box[1], atol=1e-7)
+    # the convex hull property's box of the control points holds the tight one
+    assert np.all(points.min(axis=0) <= box[0] + 1e-12) and np.all(box[1] <= points.max(axis=0) + 1e-12)
+
+
+def test_extreme_parameters_are_the_ends_and_the_zeros_of_the_hodograph():
+    # x' has two roots inside (0, 1), y' one between them
+    wide = np.array([[0.5, 0.0], [-1.0, 2.5], [5.0, 3.5], [3.5, 0.0]])
+    ts = b.extreme_parameters(wide)
+    assert ts[0] == 0 and ts[-1] == 1 and len(ts) == 5 and np.all(np.diff(ts) > 0)
+    velocity = b.derivative(wide, ts[1:-1])
+    assert np.all(np.isclose(velocity, 0, atol=1e-12).any(axis=1))
+    assert abs(b.derivative(wide, ts[2])[1]) < 1e-12 and np.allclose(b.derivative(wide, ts[[1, 3]])[:, 0], 0)
+    # a constant coordinate adds nothing; a straight line with uniform speed has no interior extreme
+    assert b.extreme_parameters([[0, 1], [1, 1], [2, 1]]).tolist() == [0.0, 1.0]
+    # a double root (the straight cubic that stops at t = 1/2) appears once
+    straight = [[-1, -1], [1, 1], [-1, -1], [1, 1]]
+    np.testing.assert_allclose(b.extreme_parameters(straight), [0, 0.5, 1], atol=1e-7)
+    # degree 0: only the ends
+    assert b.extreme_parameters([[3.0, 4.0]]).tolist() == [0.0, 1.0]
+
+
+def test_bounding_boxes_of_circles():
+    np.testing.assert_allclose(b.bounding_box(QUARTER, QUARTER_WEIGHTS), [[0, 0], [1, 1]], atol=1e-15)
+    ring = [[0, 0], [4, 0], [2, 4], [-2, 4], [-4, 0], [0, 0]]
+    np.testing.assert_allclose(b.bounding_box(ring, [5, 1, 1, 1, 1, 5]), [[-1, 0], [1, 2]], atol=1e-12)
+    # degree 0: the box of a point
+    np.testing.assert_allclose(b.bounding_box([[3.0, 4.0]]), [[3, 4], [3, 4]])
+
+
+def test_arc_length_of_known_curves():
+    assert np.isclose(b.arc_length([[0, 0], [1, 1], [2, 2]]), np.sqrt(8), rtol=1e-14)
+    assert np.isclose(b.arc_length(QUARTER, QUARTER_WEIGHTS), np.pi / 2, rtol=1e-13)
+    ring = [[0, 0], [4, 0], [2, 4], [-2, 4], [-4, 0], [0, 0]]
+    assert np.isclose(b.arc_length(ring, [5, 1, 1, 1, 1, 5]), 2 * np.pi, rtol=1e-13)
+    # the parabola y = x², x in [0, 1]: length (2√5 + asinh 2) / 4
+    assert np.isclose(b.arc_length([[0, 0], [0.5, 0], [1, 1]]), (2 * np.sqrt(5) + np.arcsinh(2)) / 4, rtol=1e-13)
+    # a cusp and a point
+    cusp = [[0, 0], [2, 2], [0, 2], [2, 0]]
+    fine = b.de_casteljau(cusp, np.linspace(0, 1, 200001))
+    assert np.isclose(b.arc_length(cusp), np.linalg.norm(np.diff(fine, axis=0), axis=1).sum(), rtol=1e-9)
+    assert b.arc_length([[1.0, 2.0], [1.0, 2.0]]) == 0.0
+
+
+@pytest.mark.parametrize("seed", range(10))
+def test_arc_length_lies_between_chord_and_polygon_and_matches_a_fine_polyline(seed):
+    points, _ = random_curve(100 + seed, degree=1 + seed % 6, dim=2 + seed % 2)
+    length = b.arc_length(points)
+    chord = np.linalg.norm(points[-1] - points[0])
+    polygon = np.linalg.norm(np.diff(points, axis=0), axis=1).sum()
+    assert chord - 1e-12 <= length <= polygon + 1e-12
+    fine = b.de_casteljau(points, np.linspace(0, 1, 100001))
+    assert np.isclose(length, np.linalg.norm(np.diff(fine, axis=0), axis=1).sum(), rtol=1e-7)

@@ -200,3 +200,27 @@ P = np.array([[0.0, 0.0], [1.0, 2.0], [3.0, 2.0], [4.0, 0.0]])
 def test_bad_input_names_the_argument(call, error, name):
     with pytest.raises(error, match=rf"^{name}:"):
         call()
+
+
+@pytest.mark.parametrize("seed", range(8))
+def test_g2_is_the_height_condition_of_the_chapter(seed):
+    # Chapter 2's theorem: at a G1 joint of two cubics, G2 holds exactly when h_P / a_P² = h_Q / a_Q²
+    # with p1 and q2 on the same side of the common tangent.
+    rng = np.random.default_rng(seed)
+    p = random_cubic(40 + seed)
+    leg = p[3] - p[2]
+    a_p = np.linalg.norm(leg)
+    u = leg / a_p
+    normal = np.array([-u[1], u[0]])
+    h_p = normal @ (p[1] - p[3])  # signed: the side of p1
+    ratio = rng.uniform(0.3, 3.0)  # a_Q / a_P
+    q = np.empty((4, 2))
+    q[0] = p[3]
+    q[1] = q[0] + ratio * leg
+    q[2] = q[1] + rng.uniform(-2, 2) * u + ratio**2 * h_p * normal  # any slide along the tangent
+    q[3] = q[2] + rng.uniform(-3, 3, 2)
+    assert c.continuity(p, q).geometric == 2
+    for wrong in (1.3 * ratio**2 * h_p, -(ratio**2) * h_p):  # another height, or the other side
+        bent = q.copy()
+        bent[2] = q[1] + wrong * normal
+        assert c.continuity(p, bent).geometric == 1

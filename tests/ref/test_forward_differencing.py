@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from math import factorial
+from math import comb, factorial
 
 import numpy as np
 import pytest
@@ -13,6 +13,7 @@ from scipy.interpolate import BPoly
 from cagd_course.examples import notes_example
 from cagd_ref import forward_differencing as fd
 from cagd_ref.bezier import de_casteljau
+from cagd_ref.polynomials import bernstein_to_power
 
 # The notes' worked example: a cubic with f(1..5) = 1, 2, 4, x, 15 and x = 8;
 # the same cubic in power form, (t³ - 3t² + 8t) / 6 (ours); our cubic in pixel units for §4.1.
@@ -39,7 +40,7 @@ def test_every_public_name_is_tested():
     tested = {
         "forward_difference_table", "initial_differences", "power_differences", "forward_difference_steps",
         "forward_difference_eval", "missing_value", "bezier_by_differences", "raster_delta", "pixels_along",
-        "rasterize", "find_gaps", "drift",
+        "rasterize", "find_gaps", "double_step", "halve_step", "adaptive_march", "drift", "float32_drift",
     }
     assert set(fd.__all__) == tested
 
@@ -300,9 +301,22 @@ def test_missing_value_recovers_any_entry_of_a_polynomial(index):
     np.testing.assert_allclose(found, polyval(fit, 0.5 * index), atol=1e-7)
 
 
+def test_missing_value_takes_nan_or_inf_as_the_placeholder_but_nowhere_else():
+    assert fd.missing_value([1.0, 2.0, 4.0, np.nan, 15.0], 3) == 8.0
+    assert fd.missing_value([np.inf, 2.0, 4.0, 8.0, 15.0], 0) == 1.0
+    found = fd.missing_value([(1.0, 0.0), (2.0, 1.0), (np.nan, np.nan), (10.0, 9.0)], 2)
+    np.testing.assert_allclose(found, [5.0, 4.0])  # two quadratics at t = 0..3: t² + 1 and t²
+    with pytest.raises(ValueError, match="^values"):
+        fd.missing_value([1.0, np.nan, 4.0, 0.0, 15.0], 3)
+
+
 def test_missing_value_rejects_bad_input():
     with pytest.raises(ValueError, match="^values"):
         fd.missing_value([1.0], 0)
+    with pytest.raises(ValueError, match="^values"):
+        fd.missing_value(np.zeros((3, 2, 2)), 0)
+    with pytest.raises(TypeError, match="^values"):
+        fd.missing_value("1 2 4", 0)
     with pytest.raises(ValueError, match="^index"):
         fd.missing_value([1.0, 2.0, 3.0], 3)
     with pytest.raises(TypeError, match="^index"):
@@ -320,6 +334,14 @@ def test_bezier_by_differences_matches_de_casteljau_and_scipy(degree):
     values = fd.bezier_by_differences(points, steps)
     np.testing.assert_allclose(values, de_casteljau(points, t), atol=1e-10)
     np.testing.assert_allclose(values, BPoly(points[:, None, :], [0, 1])(t), atol=1e-10)
+
+
+def test_power_coefficients_of_a_bezier_curve_are_scaled_differences_of_its_control_points():
+    # P(t) = ((1 - t) I + t E)ⁿ P_0 = (I + t Δ)ⁿ P_0, so a_k = C(n, k) Δᵏ P_0.
+    rows = fd.forward_difference_table(PIXEL_CUBIC)
+    a = np.array([comb(3, k) * rows[k][0] for k in range(4)])
+    np.testing.assert_allclose(a, bernstein_to_power(PIXEL_CUBIC))
+    np.testing.assert_allclose(fd.bezier_by_differences(PIXEL_CUBIC, 69), fd.forward_difference_eval(a, 0, 1 / 69, 70))
 
 
 def test_bezier_by_differences_rejects_bad_input():
@@ -394,6 +416,62 @@ def test_find_gaps_counts_jumps_of_more_than_one_pixel():
         fd.find_gaps([1, 2, 3])
 
 
+# --- changing the step, adaptive marching ----------------------------------------------------------
+
+
+@pytest.mark.parametrize("degree", range(0, 8))
+@pytest.mark.parametrize("dim", [None, 2])
+def test_doubling_and_halving_the_step_give_the_columns_of_the_new_step(degree, dim):
+    a = random_poly(degree + 10, degree, dim)
+    t0, delta = 0.3, 0.125
+    column = fd.power_differences(a, t0, delta)
+    np.testing.assert_allclose(fd.double_step(column), fd.power_differences(a, t0, 2 * delta), atol=1e-11)
+    np.testing.assert_allclose(fd.halve_step(column), fd.power_differences(a, t0, delta / 2), atol=1e-11)
+    np.testing.assert_allclose(fd.halve_step(fd.double_step(column)), column, atol=1e-11)
+    assert fd.double_step(column).shape == column.shape
+
+
+def test_the_cubic_step_maps_of_lien_shantz_and_pratt():
+    f, d1, d2, d3 = 5.0, 1.0, 2.0, 3.0
+    np.testing.assert_allclose(fd.double_step([f, d1, d2, d3]), [f, 2 * d1 + d2, 4 * d2 + 4 * d3, 8 * d3])
+    np.testing.assert_allclose(
+        fd.halve_step([f, d1, d2, d3]), [f, d1 / 2 - d2 / 8 + d3 / 16, d2 / 4 - d3 / 8, d3 / 8]
+    )
+    with pytest.raises(ValueError, match="^differences"):
+        fd.halve_step([])
+
+
+@pytest.mark.parametrize("points", [PIXEL_CUBIC, [[2.0, 2.0], [60.0, 4.0], [62.0, 6.0], [64.0, 40.0]]])
+def test_adaptive_march_keeps_every_move_within_the_limit_and_ends_at_t_one(points):
+    points = np.asarray(points, dtype=float)
+    params, samples = fd.adaptive_march(points)
+    assert params[0] == 0.0 and params[-1] == 1.0 and np.all(np.diff(params) > 0)
+    assert np.all(np.log2(np.diff(params)) == np.round(np.log2(np.diff(params))))  # steps are powers of two
+    np.testing.assert_allclose(samples, de_casteljau(points, params), atol=1e-9)
+    assert np.abs(np.diff(samples, axis=0)).max() <= 1 + 1e-9
+    assert len(fd.find_gaps(fd.pixels_along(samples))) == 0
+    assert len(params) - 1 <= np.ceil(1 / fd.raster_delta(points))
+    params, samples = fd.adaptive_march(points, limit=0.25)
+    assert np.abs(np.diff(samples, axis=0)).max() <= 0.25 + 1e-9
+
+
+def test_adaptive_march_saves_steps_where_the_speed_varies():
+    uneven = np.array([[2.0, 2.0], [60.0, 4.0], [62.0, 6.0], [64.0, 40.0]])  # fast, slow, fast
+    params, _ = fd.adaptive_march(uneven)
+    assert len(params) - 1 < 0.8 * (1 / fd.raster_delta(uneven))
+
+
+def test_adaptive_march_edge_cases_and_bad_input():
+    params, samples = fd.adaptive_march([[1.0, 2.0]])
+    assert params.tolist() == [0.0, 1.0] and samples.tolist() == [[1.0, 2.0], [1.0, 2.0]]
+    params, samples = fd.adaptive_march([[0.0, 0.0], [0.3, 0.2]])
+    assert params.tolist() == [0.0, 1.0]
+    with pytest.raises(ValueError, match="^limit"):
+        fd.adaptive_march(PIXEL_CUBIC, limit=0.0)
+    with pytest.raises(ValueError, match="^points"):
+        fd.adaptive_march([1.0, 2.0])
+
+
 # --- drift ----------------------------------------------------------------------------------------
 
 
@@ -418,3 +496,25 @@ def test_float64_drift_is_small_and_horner_is_the_yardstick():
     assert empty[0].shape == empty[1].shape == (0,)
     with pytest.raises(TypeError, match="^dtype"):
         fd.drift(a, 0.0, 1e-3, 10, dtype=int)
+
+
+def test_float32_drift_is_the_float32_march_against_float64_horner():
+    a = bernstein_to_power(25 * PIXEL_CUBIC)
+    errors = fd.float32_drift(a, 1e-4, 10001)
+    assert errors.shape == (10001, 2) and errors.dtype == np.float64
+    march = fd.forward_difference_eval(a, 0.0, 1e-4, 10001, np.float32)
+    np.testing.assert_array_equal(errors, np.abs(march.astype(float) - polyval(a, 1e-4 * np.arange(10001))))
+    np.testing.assert_array_equal(errors.max(axis=1), fd.drift(a, 0.0, 1e-4, 10001, np.float32)[0])
+    assert errors[-1].max() > 100 * errors[100].max()  # the drift grows with the number of steps
+    assert fd.float32_drift([1.0, 2.0], 0.5, 0).shape == (0,)
+
+
+def test_float32_drift_rejects_bad_input():
+    with pytest.raises(TypeError, match="^count"):
+        fd.float32_drift([1.0, 2.0], 0.1, 2.0)
+    with pytest.raises(ValueError, match="^count"):
+        fd.float32_drift([1.0, 2.0], 0.1, -1)
+    with pytest.raises(ValueError, match="^coeffs"):
+        fd.float32_drift(np.zeros((2, 2, 2)), 0.1, 3)
+    with pytest.raises(ValueError, match="^delta"):
+        fd.float32_drift([1.0, 2.0], np.nan, 3)

@@ -67,6 +67,18 @@ def test_raster_explorer_gaps_grow_with_the_step():
     assert counts[2] <= counts[1]  # fewer points, so fewer (but wider) jumps
 
 
+def test_raster_explorer_reports_where_the_march_ends():
+    explorer = widgets.raster_explorer()  # the course cubic ends at (37, 5), a pixel corner
+    state = explorer.update(delta=1 / 54)
+    assert state["steps"] == 54
+    last = state["samples"][-1]
+    assert state["end_error"] == np.abs(last - explorer.points[-1]).max() < 1e-12
+    if state["end_error"] > 0:
+        assert "from the last control point (rounding)" in explorer.readout.value
+    else:
+        assert "exactly at the last control point" in explorer.readout.value
+
+
 def test_raster_explorer_uses_a_steps_count_that_never_exceeds_delta():
     explorer = widgets.raster_explorer(CUBIC)
     state = explorer.update(delta=0.03)

@@ -38,4 +38,7 @@ CALLS = {
     "difference_bound": Call((CUBIC, QUADRATIC)),
     "hausdorff_distance": Call((CUBIC, QUADRATIC), dict(samples=51)),
     "directed_hausdorff": Call((CUBIC, QUADRATIC), dict(samples=51)),
+    "extreme_parameters": Call((CUBIC,), dict(weights=WEIGHTS)),
+    "bounding_box": [Call((CUBIC,)), Call((SPACE,), dict(weights=WEIGHTS))],
+    "arc_length": Call((CUBIC,), dict(weights=WEIGHTS, tol=1e-10)),
 }

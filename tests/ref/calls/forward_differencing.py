@@ -13,6 +13,7 @@ CALLS = {
     "power_differences": Call((CUBIC, 1.0, 0.5)),
     "forward_difference_steps": Call(([1.0, 1.0, 1.0, 1.0], 5)),
     "forward_difference_eval": Call((CUBIC, 1.0, 1.0, 7)),
+    # The entry at `index` is a placeholder and may be NaN; the poisoned first entry is a known value.
     "missing_value": Call(([1.0, 2.0, 4.0, 0.0, 15.0], 3)),
     "bezier_by_differences": Call((CURVE, 8)),
     "raster_delta": Call((CURVE,)),
@@ -20,5 +21,9 @@ CALLS = {
     "rasterize": [Call((CURVE,)), Call((CURVE, 0.05))],
     # Pixel coordinates are integers, but any numbers may come in, so they are poisoned too.
     "find_gaps": Call((np.array([[0, 0], [1, 1], [3, 1], [3, 2]]),)),
+    "double_step": Call(([1.0, 1.0, 1.0, 1.0],)),
+    "halve_step": Call(([[1.0, 0.0], [2.0, 1.0], [4.0, 4.0]],)),
+    "adaptive_march": Call((CURVE,), dict(limit=1.0)),
     "drift": Call((CUBIC, 0.0, 0.01, 20), dict(dtype=np.float32)),
+    "float32_drift": Call((CUBIC, 0.01, 20)),
 }
