@@ -8,7 +8,7 @@ import ipywidgets as widgets
 import numpy as np
 from matplotlib.ticker import MaxNLocator
 
-from cagd_ref._validation import as_vector
+from cagd_ref._validation import as_scalar, as_vector
 from cagd_ref.geometry import conic_discriminant, conic_type, rotate_about_axis, rotation_matrix
 
 from ..plotting.algebraic import plot_implicit
@@ -22,19 +22,32 @@ __all__ = ["rotation_explorer", "conic_explorer", "RotationExplorer", "ConicExpl
 
 ROTATED_POINT = np.array([1.5, 0.0, 0.5])
 AXIS_POINT = np.array([0.0, 0.0, 0.0])
+AXIS_DIRECTION = np.array([0.0, 0.3, 1.0])
+ANGLE = 60.0
 
 
 class RotationExplorer(Explorer):
-    """A point rotated about an axis through B = origin, in 3-D, with the circle it moves on. Notes §1.3."""
+    """A point P rotated about an axis through B, in 3-D, with the circle it moves on. Notes §1.3."""
 
-    def __init__(self, point=ROTATED_POINT, axis_point=AXIS_POINT):
+    def __init__(self, point=ROTATED_POINT, axis_point=AXIS_POINT, axis_direction=AXIS_DIRECTION, angle=ANGLE):
         self.point = as_vector(point, "point", dim=3)
         self.axis_point = as_vector(axis_point, "axis_point", dim=3)
+        direction = as_vector(axis_direction, "axis_direction", dim=3)
+        if not np.any(direction) or np.abs(direction).max() > 3:
+            raise ValueError(
+                f"axis_direction: expected a nonzero vector with entries in [-3, 3], got {direction.tolist()}"
+            )
+        angle = as_scalar(angle, "angle")
+        if not -180 <= angle <= 180:
+            raise ValueError(f"angle: expected degrees in [-180, 180], got {angle}")
         controls = {
-            "angle": _slider(widgets.FloatSlider, "angle (°)", min=-180.0, max=180.0, step=1.0, value=60.0),
-            "axis_x": _slider(widgets.FloatSlider, "axis x", min=-3.0, max=3.0, step=0.05, value=0.0),
-            "axis_y": _slider(widgets.FloatSlider, "axis y", min=-3.0, max=3.0, step=0.05, value=0.3),
-            "axis_z": _slider(widgets.FloatSlider, "axis z", min=-3.0, max=3.0, step=0.05, value=1.0),
+            "angle": _slider(widgets.FloatSlider, "angle (°)", min=-180.0, max=180.0, step=1.0, value=angle),
+            **{
+                f"axis_{name}": _slider(
+                    widgets.FloatSlider, f"axis {name}", min=-3.0, max=3.0, step=0.05, value=float(value)
+                )
+                for name, value in zip("xyz", direction)
+            },
         }
         super().__init__(controls, projection="3d")
 
@@ -74,6 +87,7 @@ class RotationExplorer(Explorer):
         ax.scatter(*state["original"], color="C1", s=40)
         ax.scatter(*state["point"], color="C3", s=40)
         ax.scatter(*c, color="0.4", s=15)
+        ax.scatter(*self.axis_point, color="k", marker="s", s=20)
         low, high = c - 1.3 * radius, c + 1.3 * radius
         ax.set(xlim=(low[0], high[0]), ylim=(low[1], high[1]), zlim=(low[2], high[2]))
         ax.set_box_aspect((1, 1, 1))
@@ -90,18 +104,24 @@ class RotationExplorer(Explorer):
         return (
             f"P′ = {_fmt(state['point'])}<br>axis n = {_fmt(state['axis'])}<br>"
             f"{_swatch('C1')} P &nbsp; {_swatch('C3')} P′ and the arc of θ = {state['angle']:.0f}° &nbsp; "
-            f"{_swatch('C0')} circle of rotation &nbsp; {_swatch('0.4')} its centre C &nbsp; {_swatch('0.3')} the axis"
+            f"{_swatch('C0')} circle of rotation &nbsp; {_swatch('0.4')} its centre C &nbsp; {_swatch('0.3')} the axis "
+            f"through B (square)"
         )
 
 
-def rotation_explorer(point=ROTATED_POINT, axis_point=AXIS_POINT) -> RotationExplorer:
+def rotation_explorer(
+    point=ROTATED_POINT, axis_point=AXIS_POINT, axis_direction=AXIS_DIRECTION, angle=ANGLE
+) -> RotationExplorer:
     """Controls `angle` (degrees) and `axis_x, axis_y, axis_z`: `point` (default (1.5, 0, 0.5)) rotated about
     the axis through `axis_point` (default the origin). Notes §1.3.
+
+    `axis_direction` (default (0, 0.3, 1), entries in [-3, 3]) and `angle` (default 60, in [-180, 180]) are
+    the sliders' starting values.
 
     `update` returns {"point" (3,), "matrix" (4, 4), "original", "axis" (unit),
     "center", "circle" (121, 3), "arc" (61, 3) from P to P′}; matrix @ (P, 1) gives (point, 1).
     """
-    return RotationExplorer(point, axis_point)
+    return RotationExplorer(point, axis_point, axis_direction, angle)
 
 
 class ConicExplorer(Explorer):

@@ -324,6 +324,20 @@ def test_rotation_about_z_by_90_degrees_is_a_quarter_turn():
     assert np.allclose(state["point"], [-y, x, z])
 
 
+def test_rotation_explorer_opens_on_the_given_axis_and_angle():
+    # The chapter opens it on the notes' example: (5, 7, 3) a quarter turn about (1, 1, 1) + s (2, 1, 2).
+    explorer = widgets.rotation_explorer(point=(5, 7, 3), axis_point=(1, 1, 1), axis_direction=(2, 1, 2), angle=90)
+    assert explorer.values == {"angle": 90.0, "axis_x": 2.0, "axis_y": 1.0, "axis_z": 2.0}
+    assert np.allclose(explorer.state["point"], [5 / 3, 13 / 3, 23 / 3])
+    assert np.allclose(explorer.state["center"], [5, 3, 5])
+    with pytest.raises(ValueError, match="axis_direction"):
+        widgets.rotation_explorer(axis_direction=(0, 0, 0))
+    with pytest.raises(ValueError, match="axis_direction"):
+        widgets.rotation_explorer(axis_direction=(4, 0, 0))  # beyond the sliders
+    with pytest.raises(ValueError, match="angle"):
+        widgets.rotation_explorer(angle=270)
+
+
 # ---------------------------------------------------------------- conics
 
 
