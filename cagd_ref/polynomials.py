@@ -5,7 +5,7 @@ at once (the columns), so curve coordinates and homogeneous coordinates convert,
 multiply and evaluate in one call. Power coefficients are ascending
 (a0 + a1 t + ..., as `numpy.polynomial`) in the global parameter t. Bernstein
 coefficients are on [0, 1], or on `interval=(t0, t1)` where a function takes
-one: then B_i^n is evaluated at the local parameter u = (t - t0) / (t1 - t0).
+one: then B_i^n is evaluated at the local parameter s = (t - t0) / (t1 - t0).
 """
 
 from __future__ import annotations
@@ -19,6 +19,7 @@ from ._validation import as_coefficients, as_count, as_interval, as_parameter, a
 
 __all__ = [
     "horner",
+    "horner_with_derivative",
     "bernstein_horner",
     "bernstein_horner_plain",
     "evaluation_cost",
@@ -26,6 +27,8 @@ __all__ = [
     "substitute_affine",
     "bernstein_to_power",
     "power_to_bernstein",
+    "power_to_bernstein_interval",
+    "power_to_rational_bezier",
     "bernstein_multiply",
     "bernstein_integral",
     "bernstein_area",
@@ -33,6 +36,8 @@ __all__ = [
 
 # C(n, n/2) no longer fits in a double from n = 1030 on.
 MAX_BINOMIAL_DEGREE = 1029
+# A converted weight this small against the largest one is zero up to rounding: a point at infinity.
+ZERO_WEIGHT = 1e-12
 # Parameters evaluated together: small enough for the cache, large enough for NumPy.
 BLOCK = 32768
 
@@ -55,11 +60,6 @@ def _column(values: np.ndarray, like: np.ndarray) -> np.ndarray:
     return values.reshape((-1,) + (1,) * (like.ndim - 1))
 
 
-def _constant(row: np.ndarray, count: int) -> np.ndarray:
-    """`count` copies of one coefficient row: (count,) or (count, d)."""
-    return np.broadcast_to(row, (count,) + row.shape).copy()
-
-
 def _finish(values: np.ndarray, scalar: bool):
     """One value (float, or (d,)) for a scalar parameter; the (k,) or (k, d) array otherwise."""
     if scalar:
@@ -68,11 +68,11 @@ def _finish(values: np.ndarray, scalar: bool):
 
 
 def substitute_affine(coeffs: ArrayLike, shift: float, scale: float) -> np.ndarray:
-    """Power coefficients of q(u) = p(shift + scale u) from those of p, same shape. Notes §2.13, §3.3.
+    """Power coefficients of g(s) = p(shift + scale s) from those of p, same shape. Notes §2.13, §3.3.
 
     coeffs: (n+1,) or (n+1, d) ascending power coefficients. Horner's scheme
-    again, but on polynomials: q starts as a_n and is multiplied by the linear
-    factor (shift + scale u) before each lower coefficient is added. The
+    again, but on polynomials: g starts as a_n and is multiplied by the linear
+    factor (shift + scale s) before each lower coefficient is added. The
     notes' example of §2.13, P(t) = (t² + t - 1, 2t² - t + 3) with t = 2s + 1:
 
     >>> from cagd_ref.polynomials import substitute_affine
@@ -81,14 +81,14 @@ def substitute_affine(coeffs: ArrayLike, shift: float, scale: float) -> np.ndarr
     """
     coeffs = as_coefficients(coeffs)
     shift, scale = as_scalar(shift, "shift"), as_scalar(scale, "scale")
-    q = coeffs[-1:].copy()
+    g = coeffs[-1:].copy()
     for coefficient in coeffs[-2::-1]:
-        widened = np.zeros((len(q) + 1,) + q.shape[1:])
-        widened[:-1] += shift * q
-        widened[1:] += scale * q
+        widened = np.zeros((len(g) + 1,) + g.shape[1:])
+        widened[:-1] += shift * g
+        widened[1:] += scale * g
         widened[0] += coefficient
-        q = widened
-    return q
+        g = widened
+    return g
 
 
 def horner(coeffs: ArrayLike, t: ArrayLike) -> float | np.ndarray:
@@ -110,21 +110,63 @@ def horner(coeffs: ArrayLike, t: ArrayLike) -> float | np.ndarray:
     """
     a = as_coefficients(coeffs)
     ts, scalar = as_parameter(t)
-    tt = _column(ts, a)
-    value = _constant(a[-1], len(ts))
-    for coefficient in a[-2::-1]:
-        value = value * tt + coefficient
-    return _finish(value, scalar)
+    columns = a.reshape(len(a), -1)  # (n+1, d): one polynomial per column
+    tt = ts[:, None]  # (k, 1): one row per parameter
+    h = np.ones_like(tt) * columns[-1]  # h_n = a_n at every parameter, (k, d)
+    for coefficient in columns[-2::-1]:
+        h = tt * h + coefficient  # h_(i-1) = τ h_i + a_(i-1)
+    values = h if a.ndim == 2 else h[:, 0]
+    if scalar:
+        return values[0] if a.ndim == 2 else float(values[0])
+    return values
+
+
+def horner_with_derivative(coeffs: ArrayLike, t: ArrayLike) -> tuple:
+    """Value and first derivative of a0 + a1 t + ... + an tⁿ in one nested pass. Notes §3.1 (used by §9's Newton steps).
+
+    Horner's h_i at τ are the coefficients of the quotient q(t) = h_1 + h_2 t
+    + ... + h_n t^(n-1) of p(t) by t - τ, and p'(τ) = q(τ); so a second Horner
+    recurrence, h'_n = 0, h'_(i-1) = τ h'_i + h_i, runs beside the first and
+    ends with h'_0 = p'(τ): 2n multiplies and 2n adds per point.
+    coeffs: ascending power coefficients (n+1,) or (n+1, d). t (the τ above):
+    a number -> (value, derivative), floats or (d,) each; a 1-D array of k
+    values -> two arrays (k,) or (k, d). The course's example 2 - 3t + t³ at
+    τ = 2, whose quotient by t - 2 is t² + 2t + 1:
+
+    >>> from cagd_ref.polynomials import horner_with_derivative
+    >>> horner_with_derivative([2, -3, 0, 1], 2.0)                     # p(2) = 4, p'(2) = 3·2² - 3 = 9
+    (4.0, 9.0)
+    >>> value, slope = horner_with_derivative([(1, 2, 1), (24, 30, 6), (-39, -57, -12), (20, 27, 7)], [0.0, 1.0])
+    >>> slope.tolist()                        # the notes' (X, Y, W) of §3.3: a_1, then 3 (H_3 - H_2)
+    [[24.0, 30.0, 6.0], [6.0, -3.0, 3.0]]
+
+    Ref: W. G. Horner, Philosophical Transactions of the Royal Society of London 109, 1819; D. E. Knuth, The Art of
+    Computer Programming, vol. 2, §4.6.4.
+    """
+    a = as_coefficients(coeffs)
+    ts, scalar = as_parameter(t)
+    columns = a.reshape(len(a), -1)  # (n+1, d): one polynomial per column
+    tt = ts[:, None]  # (k, 1): one row per parameter
+    h = np.ones_like(tt) * columns[-1]  # h_n = a_n
+    h_prime = np.zeros_like(h)  # h'_n = 0
+    for coefficient in columns[-2::-1]:
+        h_prime = tt * h_prime + h  # h'_(i-1) = τ h'_i + h_i, with the h_i of this step
+        h = tt * h + coefficient  # h_(i-1) = τ h_i + a_(i-1)
+    value, slope = (h, h_prime) if a.ndim == 2 else (h[:, 0], h_prime[:, 0])
+    if scalar:
+        return (value[0], slope[0]) if a.ndim == 2 else (float(value[0]), float(slope[0]))
+    return value, slope
 
 
 def bernstein_horner_plain(coeffs: ArrayLike, t: ArrayLike) -> float | np.ndarray:
     """The nested Bernstein form in its plain teaching form (what chapter 3 shows), on [0, 1]. Notes §3.2.
 
-    With s = 1 - t and c_i = C(n, i) b_i the sum Σ b_i B_i^n(t) is
-    (((c0 s + c1 t) s + c2 t²) s + ...) s + cn tⁿ: a running power tⁱ and one
-    factor s per step, O(n) per point. coeffs: Bernstein coefficients (n+1,)
-    or (n+1, d); shapes as in `horner`. `bernstein_horner` computes the same
-    values, tuned for very many parameters, and also over any interval.
+    With β_i = C(n, i) b_i the sum Σ b_i B_i^n(τ) is
+    (((β_0 (1-τ) + β_1 τ)(1-τ) + β_2 τ²)(1-τ) + ...)(1-τ) + β_n τⁿ: a running
+    power τⁱ and one factor 1 - τ per step, O(n) per point. coeffs: Bernstein
+    coefficients (n+1,) or (n+1, d); t (the τ above) and the shapes as in
+    `horner`. `bernstein_horner` computes the same values, tuned for very many
+    parameters, and also over any interval.
 
     >>> from cagd_ref.polynomials import bernstein_horner_plain
     >>> bernstein_horner_plain([1, 9, 4, 6], 0.5)      # X of the notes' rational cubic (§3.3) at t = 1/2
@@ -135,14 +177,20 @@ def bernstein_horner_plain(coeffs: ArrayLike, t: ArrayLike) -> float | np.ndarra
     b = as_coefficients(coeffs)
     ts, scalar = as_parameter(t)
     n = len(b) - 1
-    c = b * _column(_binomials(n), b)  # C(n, i) b_i, once per polynomial
-    tt = _column(ts, b)
-    s = 1 - tt
-    value, power = _constant(c[0], len(ts)), np.ones_like(tt)
-    for coefficient in c[1:]:
-        power = power * tt  # tⁱ
-        value = value * s + coefficient * power  # one more factor s on every earlier term, then + c_i tⁱ
-    return _finish(value, scalar)
+    if n > MAX_BINOMIAL_DEGREE:
+        raise ValueError(f"coeffs: degree {n} is too high; C(n, i) overflows a float beyond degree 1029")
+    binomials = np.array([comb(n, i) for i in range(n + 1)], dtype=float)
+    beta = b.reshape(n + 1, -1) * binomials[:, None]  # β_i = C(n, i) b_i, once per polynomial
+    tt = ts[:, None]  # (k, 1): one row per parameter
+    one_minus_t = 1 - tt
+    value, power = np.ones_like(tt) * beta[0], np.ones_like(tt)  # v_0 = β_0, τ⁰
+    for coefficient in beta[1:]:
+        power = power * tt  # τⁱ
+        value = value * one_minus_t + coefficient * power  # v_i = v_(i-1) (1-τ) + β_i τⁱ
+    values = value if b.ndim == 2 else value[:, 0]
+    if scalar:
+        return values[0] if b.ndim == 2 else float(values[0])
+    return values
 
 
 def bernstein_horner(coeffs: ArrayLike, t: ArrayLike, interval: ArrayLike = (0, 1)) -> float | np.ndarray:
@@ -216,7 +264,7 @@ def difference_table(coeffs: ArrayLike) -> list[np.ndarray]:
 
     Rows have shape (n+1-j,) or (n+1-j, d); row 0 is a copy of `coeffs`. The
     left column (row j, entry 0) gives the derivatives at 0:
-    B^(j)(0) = n!/(n-j)! Δʲ b_0.
+    p^(j)(0) = n!/(n-j)! Δʲ b_0.
     """
     b = as_coefficients(coeffs)
     rows = [b]
@@ -229,9 +277,9 @@ def bernstein_to_power(coeffs: ArrayLike, interval: ArrayLike = (0, 1)) -> np.nd
     """Bernstein coefficients on `interval` -> ascending power coefficients in t, same shape. Notes §3.3, (3.1).
 
     On [0, 1] the power coefficients are the Taylor coefficients at 0,
-    a_i = B^(i)(0) / i! = C(n, i) Δⁱ b_0: the left column of the difference
+    a_i = p^(i)(0) / i! = C(n, i) Δⁱ b_0: the left column of the difference
     table scaled by the binomials. On [t0, t1] that gives the polynomial in
-    u = (t - t0) / (t1 - t0), which is then rewritten in t.
+    s = (t - t0) / (t1 - t0), which is then rewritten in t.
     The notes' table read downwards, homogeneous (X, Y, W) columns:
 
     >>> from cagd_ref.polynomials import bernstein_to_power
@@ -240,9 +288,14 @@ def bernstein_to_power(coeffs: ArrayLike, interval: ArrayLike = (0, 1)) -> np.nd
     """
     b = as_coefficients(coeffs)
     t0, t1 = as_interval(interval)
-    leading = np.array([row[0] for row in difference_table(b)])
-    local = leading * _column(_binomials(len(b) - 1), b)
-    return substitute_affine(local, -t0 / (t1 - t0), 1 / (t1 - t0))
+    n = len(b) - 1
+    if n > MAX_BINOMIAL_DEGREE:
+        raise ValueError(f"coeffs: degree {n} is too high; C(n, i) overflows a float beyond degree 1029")
+    binomials = np.array([comb(n, j) for j in range(n + 1)], dtype=float)
+    left_column = np.array([row[0] for row in difference_table(b.reshape(n + 1, -1))])  # Δʲ b_0
+    local = binomials[:, None] * left_column  # a_j = C(n, j) Δʲ b_0: powers of s, (3.1)
+    power = substitute_affine(local, -t0 / (t1 - t0), 1 / (t1 - t0))  # s = (t - t0) / (t1 - t0)
+    return power.reshape(b.shape)
 
 
 def power_to_bernstein(coeffs: ArrayLike, interval: ArrayLike = (0, 1)) -> np.ndarray:
@@ -251,7 +304,7 @@ def power_to_bernstein(coeffs: ArrayLike, interval: ArrayLike = (0, 1)) -> np.nd
     The left column of the difference table is a_j / C(n, j); running the
     table backwards (each entry is the one to its left plus the one below
     that) fills in the top row, which holds the Bernstein coefficients. On
-    [t0, t1] the polynomial is first rewritten in u, t = t0 + (t1 - t0) u.
+    [t0, t1] the polynomial is first rewritten in s, t = t0 + (t1 - t0) s.
     The notes' example: a rational cubic given by its homogeneous power form.
 
     >>> from cagd_ref.polynomials import power_to_bernstein
@@ -260,15 +313,71 @@ def power_to_bernstein(coeffs: ArrayLike, interval: ArrayLike = (0, 1)) -> np.nd
     """
     a = as_coefficients(coeffs)
     t0, t1 = as_interval(interval)
-    local = substitute_affine(a, t0, t1 - t0)
-    column = local / _column(_binomials(len(a) - 1), local)
-    # `column[j]` is the entry Δʲ at the current position; stepping one place to
-    # the right replaces Δʲ by Δʲ + Δʲ⁺¹ for every order j at once.
-    top = [column[0]]
-    while len(column) > 1:
+    n = len(a) - 1
+    if n > MAX_BINOMIAL_DEGREE:
+        raise ValueError(f"coeffs: degree {n} is too high; C(n, i) overflows a float beyond degree 1029")
+    binomials = np.array([comb(n, j) for j in range(n + 1)], dtype=float)
+    local = substitute_affine(a.reshape(n + 1, -1), t0, t1 - t0)  # powers of s, t = t0 + (t1 - t0) s
+    column = local / binomials[:, None]  # the left column: Δʲ b_0 = a_j / C(n, j)
+    top = [column[0]]  # b_0
+    for _ in range(n):
+        # one place to the right, every order j at once: Δʲ b_(k+1) = Δʲ b_k + Δʲ⁺¹ b_k
         column = column[:-1] + column[1:]
-        top.append(column[0])
-    return np.array(top)
+        top.append(column[0])  # b_(k+1)
+    return np.array(top).reshape(a.shape)
+
+
+def power_to_bernstein_interval(coeffs: ArrayLike, interval: ArrayLike) -> np.ndarray:
+    """Ascending power coefficients in t -> Bernstein coefficients over [t0, t1], same shape. Notes §3.3, §2.2.
+
+    Two steps: rewrite p in the local parameter s of the interval,
+    g(s) = p(t0 + (t1 - t0) s), by Horner's rule on polynomials
+    (`substitute_affine`); then convert g on [0, 1] with the difference table.
+    `power_to_bernstein(coeffs, interval)` gives the same. coeffs: (n+1,) or
+    (n+1, d); interval: (t0, t1) with t0 < t1. t² over [1, 3] has the
+    coefficients 1, 1·3, 9 (its blossom at (1, 1), (1, 3), (3, 3)):
+
+    >>> from cagd_ref.polynomials import power_to_bernstein_interval
+    >>> power_to_bernstein_interval([0, 0, 1], (1, 3)).tolist()
+    [1.0, 3.0, 9.0]
+    >>> power_to_bernstein_interval([(1, 2, 1), (24, 30, 6), (-39, -57, -12), (20, 27, 7)], (0, 0.5))[-1].tolist()
+    [5.75, 6.125, 1.875]
+
+    The second call restricts the notes' rational cubic (§3.3) to [0, 1/2]: its
+    last coefficient row is the homogeneous point at t = 1/2.
+    """
+    a = as_coefficients(coeffs)
+    t0, t1 = as_interval(interval)
+    local = substitute_affine(a, t0, t1 - t0)  # g(s) = p(t0 + (t1 - t0) s), in powers of s
+    return power_to_bernstein(local)  # the difference table on [0, 1]
+
+
+def power_to_rational_bezier(coeffs: ArrayLike) -> tuple[np.ndarray, np.ndarray]:
+    """Homogeneous power form (X, Y, ..., W) -> control points (n+1, d) and weights (n+1,). Notes §3.3.
+
+    coeffs: (n+1, d+1), row j the coefficients of tʲ in every homogeneous
+    coordinate, the last column W. The conversion is linear, so each column
+    goes through the difference table on its own; the top row then holds the
+    homogeneous control points w_i (P_i, 1), which are divided by their
+    weights. A weight that is zero (up to rounding: |w_i| <= 1e-12 max|w_j|)
+    is a control point at infinity and raises ValueError. The notes' example:
+
+    >>> from cagd_ref.polynomials import power_to_rational_bezier
+    >>> points, weights = power_to_rational_bezier([(1, 2, 1), (24, 30, 6), (-39, -57, -12), (20, 27, 7)])
+    >>> points.round(12).tolist(), weights.round(12).tolist()
+    ([[1.0, 2.0], [3.0, 4.0], [4.0, 3.0], [3.0, 1.0]], [1.0, 3.0, 1.0, 2.0])
+    """
+    h = as_coefficients(coeffs)
+    if h.ndim != 2 or h.shape[1] < 2:
+        raise ValueError(
+            f"coeffs: expected homogeneous coefficients of shape (n+1, d+1), d >= 1, the last column W, "
+            f"got shape {h.shape}"
+        )
+    homogeneous = power_to_bernstein(h)  # rows w_i (P_i, 1): the top row of the table
+    weights = homogeneous[:, -1]
+    if np.any(np.abs(weights) <= ZERO_WEIGHT * np.abs(weights).max()):
+        raise ValueError(f"coeffs: a zero weight puts a control point at infinity, got weights {weights.tolist()}")
+    return homogeneous[:, :-1] / weights[:, None], weights
 
 
 def bernstein_multiply(f: ArrayLike, g: ArrayLike) -> np.ndarray:

@@ -1,9 +1,10 @@
 """Explorers of chapter 3 of the notes: changing between the power and Bernstein bases with the
-difference table, and what evaluating a polynomial costs by each method."""
+difference table, and how accurately each basis evaluates a polynomial with many roots in [0, 1]."""
 
 from __future__ import annotations
 
 import html
+from fractions import Fraction
 from math import comb
 
 import ipywidgets as widgets
@@ -12,20 +13,23 @@ from matplotlib.axes import Axes
 from numpy.typing import ArrayLike
 
 from cagd_ref._validation import as_coefficients, as_count
-from cagd_ref.polynomials import bernstein_horner, bernstein_to_power, difference_table, evaluation_cost, horner
+from cagd_ref.bezier import bernstein_matrix
+from cagd_ref.polynomials import bernstein_horner, bernstein_to_power, difference_table, horner
 
 from ..examples import notes_example
 from ..plotting.curves import plot_control_polygon
-from ._base import CURVE_SAMPLES, Explorer, _fmt, _slider, _swatch
+from ._base import CURVE_SAMPLES, Explorer, _slider, _swatch
 
 __all__ = [
     "basis_conversion_explorer",
-    "evaluation_cost_explorer",
+    "accuracy_explorer",
+    "evenly_spaced_roots",
     "draw_difference_table",
+    "draw_backward_fill",
     "difference_table_html",
     "power_text",
     "BasisConversionExplorer",
-    "EvaluationCostExplorer",
+    "AccuracyExplorer",
 ]
 
 # The weights of the notes' rational cubic (§3.3), the W column of its difference table.
@@ -33,11 +37,13 @@ DEFAULT_BERNSTEIN = tuple(notes_example("03.rational_cubic").results["weights"].
 MAX_EXPLORED_DEGREE = 6
 COEFFICIENT_RANGE = (-15.0, 15.0)
 SUPERSCRIPTS = str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹")
-METHOD_NAMES = {
-    "horner": "Horner (power form)",
-    "bernstein_horner": "nested Bernstein form",
-    "de_casteljau": "de Casteljau",
-}
+# Evenly spaced roots k/(m+1), k = 1..m: the explorer's range, and its parameters j/SAMPLES (SAMPLES prime,
+# so that no parameter is a root and every value has a logarithm).
+ROOT_COUNTS = (2, 20)
+SAMPLES = 397
+UNIT_ROUNDOFF = 2.0**-53
+ERROR_FLOOR = 1e-30  # the log axis starts here; errors that are exactly 0 are not drawn
+LABEL = " style='padding-right:1em'"  # a readout label cell, kept clear of its number
 
 CURVE_STYLE = {"color": "C0", "linewidth": 3, "alpha": 0.5}
 POWER_STYLE = {"color": "C1", "marker": ".", "linestyle": "none"}
@@ -48,9 +54,11 @@ INNER_STYLE = {"boxstyle": "round,pad=0.3", "facecolor": "white", "edgecolor": "
 
 
 def _entry(value) -> str:
-    """One table entry: a number, or a tuple for a row of several coordinates."""
+    """One table entry: a number, or a tuple for a row of several coordinates, written compactly: (1,-2,3)."""
     value = np.asarray(value)
-    return f"{float(value):.4g}" if value.ndim == 0 else _fmt(value)
+    if value.ndim == 0:
+        return f"{float(value):.4g}"
+    return "(" + ",".join(f"{v:.4g}" for v in np.ravel(value)) + ")"
 
 
 def _cell_style(i: int, j: int) -> dict:
@@ -120,6 +128,50 @@ def draw_difference_table(ax: Axes, coeffs: ArrayLike, power: bool = True, fonts
     ax.text(first + n / 2, 0.75, "$b_i$ (Bernstein)", ha="center", fontsize=fontsize + 1, color="C0")
     ax.set_xlim(-0.8, columns + 0.4)
     ax.set_ylim(-n - 0.7, 1.2)
+    ax.set_axis_off()
+    return ax
+
+
+FRESH_STYLE = {"boxstyle": "round,pad=0.3", "facecolor": "#fde3c8", "edgecolor": "C1", "linewidth": 1.5}
+EMPTY_STYLE = {"boxstyle": "round,pad=0.3", "facecolor": "white", "edgecolor": "0.85"}
+
+
+def draw_backward_fill(ax: Axes, left_column: ArrayLike, step: int, fontsize: float = 9) -> Axes:
+    """The difference table filled from its left column, after `step` columns. Notes §3.3.
+
+    left_column: (n+1,) the entries Δʲ b_0 = a_j / C(n, j). Entry Δʲ b_i sits at
+    (i, -j). Columns 0..step are filled; the newest one (column `step`) is
+    framed orange, with arrows from the two entries that sum to each of its
+    entries, Δʲ b_k = Δʲ b_(k-1) + Δʲ⁺¹ b_(k-1); later slots are empty boxes.
+    Returns `ax`, with its axes switched off.
+    """
+    column = as_coefficients(left_column, "left_column")
+    if column.ndim != 1:
+        raise ValueError(f"left_column: expected one column, shape (n+1,), got shape {column.shape}")
+    n = len(column) - 1
+    step = as_count(step, "step")
+    if step > n:
+        raise ValueError(f"step: expected an integer in [0, {n}], got {step}")
+    columns = [column]
+    while len(columns[-1]) > 1:
+        columns.append(columns[-1][:-1] + columns[-1][1:])  # the next column to the right
+    for i in range(n + 1):
+        for j in range(n + 1 - i):
+            if i > step:
+                ax.text(i, -j, " · ", ha="center", va="center", fontsize=fontsize, color="0.7", bbox=EMPTY_STYLE)
+                continue
+            style = FRESH_STYLE if i == step and step > 0 else (TOP_ROW_STYLE if j == 0 else INNER_STYLE)
+            if i == 0:
+                style = LEFT_COLUMN_STYLE if j else CORNER_STYLE
+            ax.text(i, -j, f"{columns[i][j]:g}", ha="center", va="center", fontsize=fontsize, bbox=style)
+            if i == step and step > 0:
+                for source in (j, j + 1):
+                    ax.annotate("", (i - 0.28, -j), (i - 0.72, -source),
+                                arrowprops={"arrowstyle": "->", "color": "C1", "linewidth": 0.9})
+    for j in range(n + 1):
+        ax.text(-0.6, -j, f"Δ{_superscript(j)}", ha="right", va="center", fontsize=fontsize, color="0.4")
+    ax.set_xlim(-1.2, n + 0.5)
+    ax.set_ylim(-n - 0.6, 0.6)
     ax.set_axis_off()
     return ax
 
@@ -225,50 +277,109 @@ def basis_conversion_explorer(coeffs: ArrayLike | None = None) -> BasisConversio
     return BasisConversionExplorer(coeffs)
 
 
-# ---------------------------------------------------------------- evaluation cost
+# ---------------------------------------------------------------- accuracy of the two bases
 
 
-class EvaluationCostExplorer(Explorer):
-    """Operations per point of Horner, nested Bernstein evaluation and de Casteljau, by degree. Notes §3.1, §3.2."""
+def evenly_spaced_roots(count: int, samples: int = SAMPLES) -> dict:
+    """p(t) = (t - 1/(m+1)) (t - 2/(m+1)) ... (t - m/(m+1)) with m = `count`, exactly. Notes ch. 3 and 13.
 
-    def __init__(self, max_degree: int = 30):
-        max_degree = as_count(max_degree, "max_degree", minimum=1)
-        self.degrees = np.arange(max_degree + 1)
-        costs = [evaluation_cost(int(n)) for n in self.degrees]
-        self.totals = {method: np.array([sum(c[method]) for c in costs]) for method in METHOD_NAMES}
-        degree = _slider(widgets.IntSlider, "degree", min=1, max=max_degree, value=3)
-        super().__init__({"degree": degree})
+    Returns {"power" (m+1,), "bernstein" (m+1,): the exact coefficients of p
+    in both bases (fractions) rounded to doubles, the only rounding either
+    form starts with; "t" (samples-1,): the doubles nearest j/samples,
+    j = 1..samples-1; "exact" (samples-1,): p at each of those doubles,
+    computed exactly and rounded once}. The test polynomial of Farouki and
+    Rajan (CAGD 4, 1987) for m = 20.
+    """
+    m = as_count(count, "count", minimum=1)
+    samples = as_count(samples, "samples", minimum=2)
+    roots = [Fraction(k, m + 1) for k in range(1, m + 1)]
+    power = [Fraction(1)]  # multiply out the factors (t - r), lowest degree first
+    for r in roots:
+        power = [Fraction(0)] + power
+        for k in range(len(power) - 1):
+            power[k] -= r * power[k + 1]
+    # b_j = sum over i <= j of C(j, i) / C(m, i) a_i, exactly
+    bernstein = [sum(Fraction(comb(j, i), comb(m, i)) * power[i] for i in range(j + 1)) for j in range(m + 1)]
+    t = np.arange(1, samples) / samples
+    exact = []
+    for x in t.tolist():
+        # x is exactly num/den (den a power of 2), so x - k/(m+1) = (num (m+1) - k den) / (den (m+1)):
+        # the product is one integer over another, and Python divides integers correctly rounded.
+        num, den = x.as_integer_ratio()
+        product = 1
+        for k in range(1, m + 1):
+            product *= num * (m + 1) - k * den
+        exact.append(product / (den * (m + 1)) ** m)
+    return {
+        "power": np.array([float(a) for a in power]),
+        "bernstein": np.array([float(b) for b in bernstein]),
+        "t": t,
+        "exact": np.array(exact),
+    }
 
-    def compute(self, degree: int) -> dict:
-        return {"degree": degree, "costs": evaluation_cost(degree), "degrees": self.degrees, "totals": self.totals}
+
+class AccuracyExplorer(Explorer):
+    """A polynomial with m evenly spaced roots in [0, 1], evaluated in both bases: errors and their scales.
+
+    Notes ch. 3 (and ch. 13 on floating point). The errors are measured against
+    exact values; the dashed lines are η (the unit round-off) times the condition numbers
+    Σ |a_i| tⁱ and Σ |b_i| B_i^m(t) of the two forms, the scale of their errors.
+    """
+
+    key_in_readout = True
+
+    def __init__(self, roots: int = 12):
+        low, high = ROOT_COUNTS
+        roots = as_count(roots, "roots")
+        if not low <= roots <= high:
+            raise ValueError(f"roots: expected an integer in [{low}, {high}], got {roots}")
+        super().__init__({"roots": _slider(widgets.IntSlider, "roots", min=low, max=high, value=roots)})
+
+    def compute(self, roots: int) -> dict:
+        data = evenly_spaced_roots(roots)
+        a, b, t, exact = data["power"], data["bernstein"], data["t"], data["exact"]
+        return {
+            **data,
+            "roots": roots,
+            "power_error": np.abs(horner(a, t) - exact),
+            "bernstein_error": np.abs(bernstein_horner(b, t) - exact),
+            "power_condition": horner(np.abs(a), t),
+            "bernstein_condition": bernstein_matrix(roots, t) @ np.abs(b),
+        }
 
     def draw(self, ax, state: dict) -> None:
-        n = state["degree"]
-        ax.figure.subplots_adjust(left=0.14)  # room for four-digit tick labels
-        for k, (method, name) in enumerate(METHOD_NAMES.items()):
-            total = state["totals"][method][n]
-            # The counts at the chosen degree go into the legend: at low degrees the dots nearly coincide.
-            ax.plot(state["degrees"], state["totals"][method], color=f"C{k}", label=f"{name}: {total}")
-            ax.plot(n, total, "o", color=f"C{k}")
-        ax.axvline(n, color="0.7", linestyle=":")
-        ax.set_xlabel("degree n")
-        ax.set_ylabel("multiplies + adds per point")
-        ax.legend(fontsize=8, loc="upper left")
-        ax.set_title(f"Cost of one evaluation at degree {n}", fontsize=10)
+        t = state["t"]
+        ax.semilogy(t, np.abs(state["exact"]), color="0.55", linewidth=1.5)
+        for name, color in (("power", "C3"), ("bernstein", "C0")):
+            error = state[f"{name}_error"]
+            shown = error > 0  # a log axis has no place for an exact result
+            ax.semilogy(t[shown], error[shown], ".", color=color, markersize=2.5)
+            ax.semilogy(t, UNIT_ROUNDOFF * state[f"{name}_condition"], "--", color=color, linewidth=1)
+        ax.set_ylim(ERROR_FLOOR, 1e2)
+        ax.set_xlim(0, 1)
+        ax.set_xlabel("t")
+        m = state["roots"]
+        ax.set_title(f"p(t) = (t − 1/{m + 1}) ⋯ (t − {m}/{m + 1}), degree {m}", fontsize=10)
 
     def describe(self, state: dict) -> str:
-        rows = "".join(
-            f"<tr><td>{METHOD_NAMES[method]}</td><td>{multiplies}</td><td>{adds}</td></tr>"
-            for method, (multiplies, adds) in state["costs"].items()
+        largest = {key: float(np.max(state[key])) for key in ("power_error", "bernstein_error")}
+        ratio = largest["power_error"] / largest["bernstein_error"]
+        return (
+            f"{_swatch('0.55')} |p(t)| &nbsp; {_swatch('C3')} error of the power form (Horner) &nbsp; "
+            f"{_swatch('C0')} error of the Bernstein form (nested)<br>dashed: η × condition number of each form"
+            f"<table><tr><td{LABEL}>largest |p|</td><td>{np.abs(state['exact']).max():.2e}</td></tr>"
+            f"<tr><td{LABEL}>largest error, power form</td><td>{largest['power_error']:.2e}</td></tr>"
+            f"<tr><td{LABEL}>largest error, Bernstein form</td><td>{largest['bernstein_error']:.2e}</td></tr>"
+            f"<tr><td{LABEL}>ratio of the two</td><td>{ratio:.1e}</td></tr></table>"
         )
-        return f"<table><tr><th>method</th><th>×</th><th>+</th></tr>{rows}</table>"
 
 
-def evaluation_cost_explorer(max_degree: int = 30) -> EvaluationCostExplorer:
-    """Slider `degree` (1..max_degree): floating-point operations per point of each evaluation method. Notes §3.1, §3.2.
+def accuracy_explorer(roots: int = 12) -> AccuracyExplorer:
+    """Slider `roots` (2..20): the error of both bases on a polynomial with that many roots in (0, 1). Notes ch. 3.
 
-    `update` returns {"degree", "costs" (`polynomials.evaluation_cost` at that
-    degree: method -> (multiplies, adds)), "degrees" (0..max_degree), "totals"
-    (method -> multiplies + adds at every degree)}.
+    `update` returns the keys of `evenly_spaced_roots` ("power", "bernstein",
+    "t", "exact") and "roots", "power_error", "bernstein_error" (|computed -
+    exact| at each t, Horner resp. the nested Bernstein form), "power_condition"
+    Σ |a_i| tⁱ and "bernstein_condition" Σ |b_i| B_i^m(t).
     """
-    return EvaluationCostExplorer(max_degree)
+    return AccuracyExplorer(roots)

@@ -26,8 +26,9 @@ t_sym = sp.Symbol("t")
 
 def test_every_public_name_is_tested():
     tested = {
-        "horner", "bernstein_horner", "bernstein_horner_plain", "evaluation_cost", "difference_table",
-        "substitute_affine", "bernstein_to_power", "power_to_bernstein", "bernstein_multiply", "bernstein_integral",
+        "horner", "horner_with_derivative", "bernstein_horner", "bernstein_horner_plain", "evaluation_cost",
+        "difference_table", "substitute_affine", "bernstein_to_power", "power_to_bernstein",
+        "power_to_bernstein_interval", "power_to_rational_bezier", "bernstein_multiply", "bernstein_integral",
         "bernstein_area",
     }
     assert set(p.__all__) == tested
@@ -92,6 +93,53 @@ def test_horner_small_example():
     quotient, remainder = npp.polydiv(coeffs, [-t, 1.0])
     np.testing.assert_array_equal(quotient, example.results["quotient"])
     np.testing.assert_array_equal(remainder, [example.results["value"]])
+
+
+@pytest.mark.parametrize("degree", [0, 1, 2, 5, 12])
+def test_horner_with_derivative_against_numpy(degree):
+    rng = np.random.default_rng(50 + degree)
+    a = rng.normal(size=degree + 1)
+    t = rng.uniform(-2, 2, 15)
+    value, slope = p.horner_with_derivative(a, t)
+    assert value.shape == slope.shape == (15,)
+    np.testing.assert_allclose(value, npp.polyval(t, a), rtol=1e-12, atol=1e-12)
+    np.testing.assert_allclose(slope, npp.polyval(t, npp.polyder(a)) if degree else 0 * t, rtol=1e-12, atol=1e-12)
+    value, slope = p.horner_with_derivative(a, 0.7)
+    assert isinstance(value, float) and isinstance(slope, float)
+    assert value == p.horner(a, 0.7)  # the same h_i as Horner's rule alone
+    assert p.horner_with_derivative(a, 0.0)[1] == (a[1] if degree else 0.0)  # p'(0) = a_1
+    columns = rng.normal(size=(degree + 1, 3))
+    value, slope = p.horner_with_derivative(columns, t)
+    assert value.shape == slope.shape == (15, 3)
+    np.testing.assert_allclose(value, p.horner(columns, t), rtol=1e-12, atol=1e-12)
+    if degree:
+        np.testing.assert_allclose(slope, npp.polyval(t, npp.polyder(columns)).T, rtol=1e-12, atol=1e-12)
+    assert [x.shape for x in p.horner_with_derivative(columns, 0.7)] == [(3,), (3,)]
+
+
+def test_horner_with_derivative_is_the_quotient_at_t():
+    # p(x) = (x - t) q(x) + p(t) with q built from the h_i: p'(t) = q(t). The course example: q = x² + 2x + 1.
+    example = notes_example("03.horner_steps")
+    coeffs, t = example.args("coeffs", "t")
+    value, slope = p.horner_with_derivative(coeffs, t)
+    assert value == example.results["value"]
+    assert slope == npp.polyval(t, example.results["quotient"]) == 9.0
+    # SymPy differentiates the notes' rational cubic exactly, coordinate by coordinate.
+    exact = [sp.Poly(list(reversed(column.tolist())), t_sym).diff(t_sym) for column in NOTES_POWER.T]
+    for tau in (sp.Rational(-1, 2), sp.Rational(1, 3), sp.Integer(2)):
+        _, slopes = p.horner_with_derivative(NOTES_POWER, float(tau))
+        np.testing.assert_allclose(slopes, [float(d.eval(tau)) for d in exact], rtol=1e-14)
+
+
+def test_horner_with_derivative_counts_two_horner_passes():
+    counts = {"multiplies": 0, "adds": 0}
+    coeffs = [2.0, -3.0, 0.0, 1.0, 0.5]
+    h, d = coeffs[-1], 0.0
+    tally = Tally(1.5, counts)
+    for coefficient in coeffs[-2::-1]:
+        d, h = tally * d + h, tally * h + coefficient
+    assert (float(h), float(d)) == pytest.approx(p.horner_with_derivative(coeffs, 1.5))
+    assert counts == {"multiplies": 2 * 4, "adds": 2 * 4}
 
 
 @pytest.mark.parametrize("degree", [0, 1, 2, 3, 7, 15])
@@ -390,6 +438,63 @@ def test_conversions_on_an_interval_against_polynomial_composition(degree, inter
     np.testing.assert_allclose(p.bernstein_to_power(there, interval), a, rtol=1e-9, atol=1e-9)
 
 
+@pytest.mark.parametrize("interval", [(0, 1), (1, 3), (-2, -0.5), (0.25, 4)])
+@pytest.mark.parametrize("degree", [0, 1, 4, 7])
+def test_power_to_bernstein_interval_is_the_conversion_on_the_interval(degree, interval):
+    rng = np.random.default_rng(60 + degree)
+    for a in (rng.normal(size=degree + 1), rng.normal(size=(degree + 1, 2))):
+        got = p.power_to_bernstein_interval(a, interval)
+        assert got.shape == a.shape
+        np.testing.assert_allclose(got, p.power_to_bernstein(a, interval), rtol=1e-12, atol=1e-12)
+        # SciPy's BPoly on the breakpoints [t0, t1] evaluates the same polynomial.
+        t = np.linspace(*interval, 9)
+        bpoly = BPoly(got.reshape(degree + 1, 1, -1), list(interval))
+        np.testing.assert_allclose(bpoly(t).reshape((9,) + a.shape[1:]), p.horner(a, t), rtol=1e-9, atol=1e-9)
+
+
+def test_power_to_bernstein_interval_by_blossoms():
+    # The Bernstein coefficients over [r, s] of t² are its blossom r², r s, s²; of t³: r³, r²s, r s², s³.
+    for r, s in [(1.0, 3.0), (-2.0, 0.5), (0.25, 0.75)]:
+        np.testing.assert_allclose(p.power_to_bernstein_interval([0, 0, 1], (r, s)), [r * r, r * s, s * s], rtol=1e-13)
+        np.testing.assert_allclose(p.power_to_bernstein_interval([0, 0, 0, 1], (r, s)),
+                                   [r**3, r * r * s, r * s * s, s**3], rtol=1e-12, atol=1e-14)
+
+
+def test_power_to_rational_bezier_reproduces_the_notes_example():
+    points, weights = p.power_to_rational_bezier(NOTES_POWER)
+    np.testing.assert_allclose(points, RATIONAL_CUBIC.results["points"], atol=1e-12)
+    np.testing.assert_allclose(weights, RATIONAL_CUBIC.results["weights"], atol=1e-12)
+    # The same curve both ways: the power form divided by W, and the rational Bézier form.
+    t = np.linspace(0, 1, 21)
+    xyw = p.horner(NOTES_POWER, t)
+    np.testing.assert_allclose(evaluate(points, t, weights), xyw[:, :2] / xyw[:, 2:], rtol=1e-12)
+    # Lists of tuples work, and a 3-D homogeneous curve (X, Y, Z, W) too.
+    space = np.column_stack([NOTES_POWER[:, :2], NOTES_POWER[:, :1], NOTES_POWER[:, 2:]])
+    points3, weights3 = p.power_to_rational_bezier(space.tolist())
+    np.testing.assert_allclose(points3, np.column_stack([points, points[:, 0]]), atol=1e-12)
+    np.testing.assert_allclose(weights3, weights, atol=1e-12)
+
+
+def test_power_to_rational_bezier_of_random_curves_with_negative_weights():
+    rng = np.random.default_rng(8)
+    for degree in (1, 2, 5):
+        points = rng.normal(size=(degree + 1, 2))
+        weights = rng.uniform(0.5, 3, degree + 1) * rng.choice([-1.0, 1.0], degree + 1)
+        homogeneous = np.column_stack([points * weights[:, None], weights])
+        got_points, got_weights = p.power_to_rational_bezier(p.bernstein_to_power(homogeneous))
+        np.testing.assert_allclose(got_points, points, rtol=1e-9, atol=1e-9)
+        np.testing.assert_allclose(got_weights, weights, rtol=1e-9, atol=1e-9)
+
+
+def test_power_to_rational_bezier_refuses_a_point_at_infinity():
+    # W = (1 - t)²: Bernstein weights 1, 0, 0.
+    with pytest.raises(ValueError, match="^coeffs: a zero weight"):
+        p.power_to_rational_bezier([(0, 1), (1, -2), (0, 1)])
+    # W = 1 - 3t + 3t² written with rounding: its middle weight is 1 - 3/2 = -1/2; no refusal.
+    _, weights = p.power_to_rational_bezier([(0, 1), (1, -3), (0, 3)])
+    np.testing.assert_allclose(weights, [1.0, -0.5, 1.0])
+
+
 def test_interval_conversion_is_exact_on_integer_data():
     # Bernstein coefficients (2, -1, 3) on [1, 3]: SymPy expands with u = (t - 1)/2 in rationals.
     b = [2, -1, 3]
@@ -496,6 +601,15 @@ def test_bernstein_integral_notes_formula_and_columns():
         (lambda: p.bernstein_to_power(np.ones(1031)), ValueError, "coeffs"),
         (lambda: p.bernstein_multiply(np.ones(600), np.ones(600)), ValueError, "f, g"),
         (lambda: p.evaluation_cost(-1), ValueError, "degree"),
+        (lambda: p.horner_with_derivative([], 0.5), ValueError, "coeffs"),
+        (lambda: p.horner_with_derivative([1, 2], [[0.5]]), ValueError, "t"),
+        (lambda: p.power_to_bernstein_interval([1, 2], (1, 1)), ValueError, "interval"),
+        (lambda: p.power_to_bernstein_interval([1, 2], (0, 1, 2)), ValueError, "interval"),
+        (lambda: p.power_to_bernstein_interval(np.zeros((2, 2, 2)), (0, 1)), ValueError, "coeffs"),
+        (lambda: p.power_to_rational_bezier([1.0, 2.0, 3.0]), ValueError, "coeffs"),
+        (lambda: p.power_to_rational_bezier([[1.0], [2.0]]), ValueError, "coeffs"),
+        (lambda: p.power_to_rational_bezier([(1.0, 0.0), (2.0, 0.0)]), ValueError, "coeffs"),
+        (lambda: p.power_to_rational_bezier("abc"), TypeError, "coeffs"),
         (lambda: p.evaluation_cost(2.0), TypeError, "degree"),
     ],
 )

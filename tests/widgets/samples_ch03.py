@@ -2,5 +2,5 @@
 
 SAMPLES = {
     "basis_conversion_explorer": ({"b1": 4.5}, {"bernstein", "power", "table", "text"}),
-    "evaluation_cost_explorer": ({"degree": 7}, {"degree", "costs", "totals"}),
+    "accuracy_explorer": ({"roots": 16}, {"roots", "power_error", "bernstein_error", "exact", "t"}),
 }

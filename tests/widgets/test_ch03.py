@@ -1,8 +1,10 @@
-"""cagd_course.widgets.ch03: the basis-conversion and evaluation-cost explorers, driven without a browser."""
+"""cagd_course.widgets.ch03: the basis-conversion and accuracy explorers, driven without a browser."""
 
 import matplotlib
 
 matplotlib.use("Agg")
+
+from fractions import Fraction
 
 import numpy as np
 import numpy.polynomial.polynomial as npp
@@ -13,7 +15,7 @@ from cagd_course import widgets
 from cagd_course.examples import notes_example
 from cagd_course.widgets import ch03
 from cagd_ref.bezier import de_casteljau
-from cagd_ref.polynomials import evaluation_cost
+from cagd_ref.polynomials import bernstein_to_power, power_to_bernstein
 
 # The notes' rational cubic, one homogeneous coordinate at a time: Bernstein column -> power column.
 RATIONAL = notes_example("03.rational_cubic")
@@ -24,9 +26,9 @@ NOTES_COLUMNS = {
 
 def test_module_exports_what_the_tests_cover():
     assert set(ch03.__all__) == {
-        "basis_conversion_explorer", "evaluation_cost_explorer", "draw_difference_table", "difference_table_html",
-        "power_text",
-        "BasisConversionExplorer", "EvaluationCostExplorer",
+        "basis_conversion_explorer", "accuracy_explorer", "evenly_spaced_roots", "draw_difference_table",
+        "draw_backward_fill", "difference_table_html", "power_text",
+        "BasisConversionExplorer", "AccuracyExplorer",
     }
     assert set(ch03.__all__) <= set(widgets.__all__)
 
@@ -128,7 +130,7 @@ def test_draw_difference_table_of_homogeneous_rows():
     texts = [t.get_text() for t in ax.texts]
     # The notes' left column a_j / C(3, j) and the power coefficients a_j beside it, as (X, Y, W) triples.
     for row in [*RATIONAL.results["left_column"], *RATIONAL.inputs["power"]]:
-        assert str(tuple(int(v) for v in row)) in texts
+        assert "(" + ",".join(str(int(v)) for v in row) + ")" in texts
     assert not ax.axison
     bare = Figure().add_subplot()
     widgets.draw_difference_table(bare, [2.0, 5.0], power=False, fontsize=9)
@@ -136,26 +138,68 @@ def test_draw_difference_table_of_homogeneous_rows():
     assert {t.get_fontsize() for t in bare.texts} <= {9, 10}
 
 
-# ---------------------------------------------------------------- evaluation cost
+def test_draw_backward_fill_fills_one_column_per_step():
+    # The weights of the notes' example: left column a_j / C(3, j) = 1, 2, -4, 7; top row 1, 3, 1, 2.
+    left = [1.0, 2.0, -4.0, 7.0]
+    for step, filled in [(0, ["1", "2", "-4", "7"]), (1, ["3", "-2", "3"]), (3, ["1", "3", "1", "2"])]:
+        ax = Figure().add_subplot()
+        assert widgets.draw_backward_fill(ax, left, step) is ax
+        texts = [t.get_text() for t in ax.texts]
+        for entry in filled:
+            assert entry in texts
+        assert texts.count(" · ") == sum(max(0, 4 - i) for i in range(step + 1, 4))  # the empty slots
+        arrows = [a for a in ax.texts if getattr(a, "arrow_patch", None) is not None]
+        assert len(arrows) == (0 if step == 0 else 2 * (4 - step))
+        assert not ax.axison
+    with pytest.raises(ValueError, match="step"):
+        widgets.draw_backward_fill(Figure().add_subplot(), left, 4)
+    with pytest.raises(ValueError, match="left_column"):
+        widgets.draw_backward_fill(Figure().add_subplot(), [[1.0, 2.0]], 0)
 
 
-def test_evaluation_cost_explorer_reports_the_counts():
-    explorer = widgets.evaluation_cost_explorer()
-    for degree in (1, 3, 10, 30):
-        state = explorer.update(degree=degree)
-        assert state["costs"] == evaluation_cost(degree)
-        for method, totals in state["totals"].items():
-            assert totals[degree] == sum(evaluation_cost(degree)[method])
-            assert len(totals) == 31
-        assert f"<td>{degree}</td><td>{degree}</td>" in explorer.readout.value  # Horner: n and n
+# ---------------------------------------------------------------- accuracy of the two bases
 
 
-def test_evaluation_cost_explorer_range_and_bad_values():
-    explorer = widgets.evaluation_cost_explorer(max_degree=12)
-    assert explorer.controls["degree"].max == 12
-    with pytest.raises(ValueError, match="degree"):
-        explorer.update(degree=13)
-    with pytest.raises(TypeError, match="degree"):
-        explorer.update(degree=2.5)
-    with pytest.raises(ValueError, match="max_degree"):
-        widgets.evaluation_cost_explorer(max_degree=0)
+def test_evenly_spaced_roots_are_exact():
+    data = ch03.evenly_spaced_roots(3, samples=8)
+    # (t - 1/4)(t - 1/2)(t - 3/4) = -3/32 + 11/16 t - 3/2 t² + t³
+    np.testing.assert_array_equal(data["power"], [-3 / 32, 11 / 16, -3 / 2, 1])
+    np.testing.assert_allclose(data["bernstein"], power_to_bernstein(data["power"]), atol=1e-15)
+    np.testing.assert_allclose(bernstein_to_power(data["bernstein"]), data["power"], atol=1e-15)
+    np.testing.assert_array_equal(data["t"], np.arange(1, 8) / 8)
+    roots = [Fraction(1, 4), Fraction(1, 2), Fraction(3, 4)]
+    expected = [float(np.prod([Fraction(j, 8) - r for r in roots])) for j in range(1, 8)]
+    np.testing.assert_array_equal(data["exact"], expected)
+    assert data["exact"][1] == data["exact"][3] == data["exact"][5] == 0.0  # the roots themselves
+    with pytest.raises(ValueError, match="count"):
+        ch03.evenly_spaced_roots(0)
+
+
+def test_accuracy_explorer_shows_the_bernstein_form_far_ahead():
+    explorer = widgets.accuracy_explorer()
+    assert list(explorer.controls) == ["roots"] and explorer.values["roots"] == 12
+    previous_ratio = 0.0
+    for roots in (4, 12, 20):
+        state = explorer.update(roots=roots)
+        assert len(state["power"]) == roots + 1 and state["t"].shape == state["power_error"].shape
+        u = 2.0**-53
+        # Each error stays under its bound: (2n+1) u resp. (3n+2) u times the condition number (to first order).
+        assert np.all(state["power_error"] <= (2 * roots + 2) * u * state["power_condition"])
+        assert np.all(state["bernstein_error"] <= (3 * roots + 3) * u * state["bernstein_condition"])
+        assert np.all(state["bernstein_condition"] <= state["power_condition"] * (1 + 1e-12))  # Farouki–Rajan
+        ratio = state["power_error"].max() / state["bernstein_error"].max()
+        assert ratio > previous_ratio
+        previous_ratio = ratio
+    assert previous_ratio > 1e6
+    assert "ratio" in explorer.readout.value and explorer.ax.get_legend() is None
+
+
+def test_accuracy_explorer_range_and_bad_values():
+    with pytest.raises(ValueError, match="roots"):
+        widgets.accuracy_explorer(roots=1)
+    with pytest.raises(TypeError, match="roots"):
+        widgets.accuracy_explorer(roots=2.5)
+    explorer = widgets.accuracy_explorer(roots=5)
+    with pytest.raises(ValueError, match="roots"):
+        explorer.update(roots=21)
+    assert explorer.values["roots"] == 5
