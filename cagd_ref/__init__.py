@@ -11,7 +11,7 @@ Part I. Curves
     geometry              1        points, vectors, lines, planes, rotations, conics
     bezier                2        de Casteljau, subdivision, elevation, hodographs, rational curves, boxes, arc length
     continuity            2        parametric and geometric continuity of joined curves, curvature combs
-    polynomials           2, 3, 9  power and Bernstein bases: Horner (with p'), conversions (on [t0, t1], rational), products
+    polynomials           2, 3, 9  power and Bernstein bases: Horner (with p'), conversions (on [t0, t1], rational)
     forward_differencing  4        n additions per value: the difference table, raster steps, adaptive steps, drift
     blending              5        Timmer, Ball, Overhauser and Catmull-Rom curves, Bézier forms, crossing counts
     blending_properties   5        which of the six properties a set of blending functions has

@@ -26,7 +26,7 @@ import math
 import numpy as np
 
 from ._validation import as_count, as_float_array, as_parameter, as_points, as_scalar
-from .bspline import _in_domain, _knots_of_degree, _nonzero_spans, _spans, basis_matrix, derivative, greville
+from .bspline import _in_domain, _nonzero_spans, _spans, basis_matrix, checked_knots, derivative, greville
 from .polynomials import BLOCK
 
 __all__ = [
@@ -168,7 +168,7 @@ def fitting_knots(params, count: int, degree: int, method: str = "uniform") -> n
     else:
         raise ValueError(f"method: expected 'uniform' or 'averaging', got {method!r}")
     knots = np.concatenate([np.full(n, s[0]), inner, np.full(n, s[-1])])
-    _knots_of_degree(knots, n)  # many equal parameters could pile up more than n equal knots
+    checked_knots(knots, n)  # many equal parameters could pile up more than n equal knots
     return knots
 
 
@@ -188,7 +188,7 @@ def _fit_inputs(points, params, knots, degree):
     u = _parameters(params, "params")
     if len(u) != len(pts):
         raise ValueError(f"params: expected one parameter per sample ({len(pts)}), got {len(u)}")
-    kn, n = _knots_of_degree(knots, degree)
+    kn, n = checked_knots(knots, degree)
     _in_domain(u, kn, n, "params")
     return pts, u, kn, n, len(kn) - n + 1
 
@@ -409,7 +409,7 @@ def _spline_knots(ctrl: np.ndarray, knots) -> tuple[np.ndarray, int]:
     if kn.ndim != 1 or len(kn) < len(ctrl):
         raise ValueError(f"knots: {len(ctrl)} control points need at least {len(ctrl)} knots (degree >= 1), "
                          f"got shape {kn.shape}")
-    return _knots_of_degree(kn, len(kn) - len(ctrl) + 1)
+    return checked_knots(kn, len(kn) - len(ctrl) + 1)
 
 
 def _evaluate(ctrl: np.ndarray, kn: np.ndarray, n: int, u: np.ndarray) -> np.ndarray:
@@ -444,7 +444,7 @@ def fairing_matrix(knots, degree: int, order: int = 2) -> np.ndarray:
 
 
 def _fairing_inputs(knots, degree, order=2):
-    kn, n = _knots_of_degree(knots, degree)
+    kn, n = checked_knots(knots, degree)
     k = as_count(order, "order", minimum=1)
     _check_fairing_degree(n, k)
     return kn, n, k

@@ -2,7 +2,7 @@
 
 Knot vectors follow the notes, not the usual textbook convention: a degree-n
 B-spline with c control points has c + n - 1 knots t_0 ... t_{c+n-2} and no
-dummy end knots. Control point i is the polar value f(t_i, ..., t_{i+n-1}),
+dummy end knots. Control point i is the polar value P(t_i, ..., t_{i+n-1}),
 the curve is defined over the domain [t_{n-1}, t_{c-1}], and the degree is
 len(knots) - len(points) + 1. `to_scipy` / `from_scipy` convert to the
 c + n + 1 convention of SciPy and most software.
@@ -29,6 +29,9 @@ from .polynomials import BLOCK
 __all__ = [
     "de_boor",
     "de_boor_plain",
+    "checked_bspline",
+    "checked_knots",
+    "knot_span",
     "de_boor_triangle",
     "insert_knot",
     "insert_knots",
@@ -89,8 +92,12 @@ def _check_knots(kn: np.ndarray, n: int, name: str = "knots") -> None:
         )
 
 
-def _spline(points, knots) -> tuple[np.ndarray, np.ndarray, int]:
-    """Checked (points (c, d), knots (c+n-1,), degree n) of a B-spline in the notes' convention."""
+def checked_bspline(points, knots) -> tuple[np.ndarray, np.ndarray, int]:
+    """A B-spline's arrays, checked: (points (c, d), knots (c+n-1,), degree n) in the notes' convention. Notes §6.2.
+
+    Fresh float copies; a clear ValueError for too few knots, decreasing knots,
+    an empty domain or a knot repeated more than n times.
+    """
     pts = as_points(points)
     kn = _as_knots(knots)
     n = len(kn) - len(pts) + 1
@@ -103,7 +110,8 @@ def _spline(points, knots) -> tuple[np.ndarray, np.ndarray, int]:
     return pts, kn, n
 
 
-def _knots_of_degree(knots, degree) -> tuple[np.ndarray, int]:
+def checked_knots(knots, degree) -> tuple[np.ndarray, int]:
+    """A knot vector for the given degree, checked as `checked_bspline` does: (knots (m,), degree n). Notes §6.2."""
     kn = _as_knots(knots)
     n = as_count(degree, "degree", minimum=1)
     _check_knots(kn, n)
@@ -112,7 +120,7 @@ def _knots_of_degree(knots, degree) -> tuple[np.ndarray, int]:
 
 def domain(knots, degree: int) -> tuple[float, float]:
     """The parameter interval [t_(n-1), t_(c-1)] over which the B-spline is defined. Notes §6.2, §6.14."""
-    kn, n = _knots_of_degree(knots, degree)
+    kn, n = checked_knots(knots, degree)
     return float(kn[n - 1]), float(kn[len(kn) - n])
 
 
@@ -138,6 +146,18 @@ def _spans(kn: np.ndarray, n: int, ts: np.ndarray) -> np.ndarray:
     return np.minimum(np.searchsorted(kn, ts, side="right") - 1, last)
 
 
+def knot_span(knots, degree: int, t, name: str = "t"):
+    """The span j with t_j <= t < t_(j+1) of each t in the domain (the last span takes its right end). Notes §6.8.
+
+    t: a number -> an int, or k numbers -> (k,) ints; a t outside the domain is a ValueError.
+    """
+    kn, n = checked_knots(knots, degree)
+    ts, scalar = as_parameter(t, name)
+    _in_domain(ts, kn, n, name)
+    spans = _spans(kn, n, ts)
+    return int(spans[0]) if scalar else spans
+
+
 def _gather(pts: np.ndarray, kn: np.ndarray, n: int, spans: np.ndarray):
     """Control points (k, n+1, d) of each span and the 2n knots t_(j-n+1) ... t_(j+n) around it."""
     first = spans[:, None] - n + 1
@@ -149,7 +169,7 @@ def _triangle(local_points: np.ndarray, local_knots: np.ndarray, values: np.ndar
 
     values (k, n) holds the argument used at each level: the same t throughout
     for the de Boor algorithm, the n polar arguments for a blossom. The point of
-    level r with polar label f(u_1..u_r, t_i..t_(i+n-r-1)) is the affine
+    level r with polar label P(u_1..u_r, t_i..t_(i+n-r-1)) is the affine
     combination of its two parents that replaces knot t_(i-1) (or t_(i+n-r)) by u_r.
     """
     n = local_points.shape[1] - 1
@@ -180,7 +200,7 @@ def de_boor(points, knots, t) -> np.ndarray:
 
     Ref: C. de Boor, On calculating with B-splines, J. Approx. Theory 6, 1972.
     """
-    pts, kn, n = _spline(points, knots)
+    pts, kn, n = checked_bspline(points, knots)
     ts, scalar = as_parameter(t)
     _in_domain(ts, kn, n)
     first = _spans(kn, n, ts) - n + 1  # index of the first control point of each t's span
@@ -219,10 +239,9 @@ def de_boor_plain(points, knots, t) -> np.ndarray:
 
     Ref: C. de Boor, On calculating with B-splines, J. Approx. Theory 6, 1972.
     """
-    pts, kn, n = _spline(points, knots)
+    pts, kn, n = checked_bspline(points, knots)
     ts, scalar = as_parameter(t)
-    _in_domain(ts, kn, n)
-    j = _spans(kn, n, ts)[:, None]  # (k, 1): t_j <= t < t_(j+1)
+    j = knot_span(kn, n, ts)[:, None]  # (k, 1): t_j <= t < t_(j+1)
     tau = ts[:, None]
     level = pts[j - n + 1 + np.arange(n + 1)]  # (k, n+1, d): the span's control points
     for r in range(1, n + 1):
@@ -240,7 +259,7 @@ def de_boor_triangle(points, knots, t) -> tuple[list[np.ndarray], int]:
     P_(j-n+1) ... P_(j+1) of the span [t_j, t_(j+1)] containing t, the last
     level the single point P(t).
     """
-    pts, kn, n = _spline(points, knots)
+    pts, kn, n = checked_bspline(points, knots)
     tau = np.array([as_scalar(t, "t")])
     _in_domain(tau, kn, n)
     span = _spans(kn, n, tau)
@@ -269,7 +288,7 @@ def insert_knot(points, knots, t) -> tuple[np.ndarray, np.ndarray]:
 
     Ref: W. Boehm, Inserting new knots into B-spline curves, CAD 12(4), 1980.
     """
-    pts, kn, n = _spline(points, knots)
+    pts, kn, n = checked_bspline(points, knots)
     tau = as_scalar(t, "t")
     a, b = kn[n - 1], kn[len(kn) - n]
     if not a <= tau <= b:
@@ -289,7 +308,7 @@ def insert_knot(points, knots, t) -> tuple[np.ndarray, np.ndarray]:
 def insert_knots(points, knots, ts) -> tuple[np.ndarray, np.ndarray]:
     """Insert several knots one after another (in any order): Notes §6.7. ts: a number or (m,)."""
     values, _ = as_parameter(ts, "ts")
-    pts, kn, _ = _spline(points, knots)
+    pts, kn, _ = checked_bspline(points, knots)
     for tau in values:
         pts, kn = insert_knot(pts, kn, tau)
     return pts, kn
@@ -299,7 +318,7 @@ def bezier_segments(points, knots) -> np.ndarray:
     """Bézier control points of every segment of positive length, in order: shape (s, n+1, d). Notes §6.3, §6.7.
 
     The Bézier control points of the span [a, b] are the polar values
-    f(a, ..., a, b, ..., b) (n - i times a, i times b): what inserting every
+    P(a, ..., a, b, ..., b) (n - i times a, i times b): what inserting every
     knot until it has multiplicity n would leave there (§6.7). All of them
     come from one polar de Boor triangle per span, evaluated for every span
     and label at once, instead of one insertion after another.
@@ -314,7 +333,7 @@ def bezier_segments(points, knots) -> np.ndarray:
 
     Ref: W. Boehm, Inserting new knots into B-spline curves, CAD 12(4), 1980.
     """
-    pts, kn, n = _spline(points, knots)
+    pts, kn, n = checked_bspline(points, knots)
     spans = _nonzero_spans(kn, n)
     # labels[r, i] = (a, ..., a, b, ..., b) with n - i copies of a = t_j and i of b = t_(j+1), j = spans[r]
     takes_b = np.arange(n)[None, :] >= (n - np.arange(n + 1))[:, None]
@@ -325,7 +344,7 @@ def bezier_segments(points, knots) -> np.ndarray:
 
 def bezier_segment_intervals(knots, degree: int) -> np.ndarray:
     """Parameter intervals [t_j, t_(j+1)] of the segments of positive length, in order: (s, 2). Notes §6.3."""
-    kn, n = _knots_of_degree(knots, degree)
+    kn, n = checked_knots(knots, degree)
     spans = _nonzero_spans(kn, n)
     return np.column_stack([kn[spans], kn[spans + 1]])
 
@@ -356,7 +375,7 @@ def _span_of_smallest(kn: np.ndarray, n: int, args: np.ndarray) -> np.ndarray:
 
 
 def blossom(points, knots, args) -> np.ndarray:
-    """The polar value f(u_1, ..., u_n) of a B-spline curve: shape (d,). Notes §6.1, §6.11.
+    """The polar value P(u_1, ..., u_n) of a B-spline curve: shape (d,). Notes §6.1, §6.11.
 
     Each segment of a B-spline has its own blossom, so the arguments must say
     which one. Rule: the segment used is the one whose span contains the
@@ -364,19 +383,19 @@ def blossom(points, knots, args) -> np.ndarray:
     the domain, the first or last span beyond the domain). Every other segment
     whose open span meets [min(args), max(args)] must give the same value, or
     the polar value is ambiguous and a ValueError says so. The labels
-    f(t_i, ..., t_(i+n-1)) = P_i of control points that act on the curve
+    P(t_i, ..., t_(i+n-1)) = P_i of control points that act on the curve
     always pass, and so do arguments inside one span. Arguments outside [t_0, t_(c+n-2)] are rejected.
 
     >>> from cagd_ref.bspline import blossom
     >>> quartic = [(1, 1), (1, 4), (4, 7), (7, 4), (7, 1)]   # §6.7: the quartic over [1, 5]
-    >>> blossom(quartic, [1, 1, 1, 1, 5, 5, 5, 5], [1, 1, 3, 5]).tolist()   # f(1, 1, 3, 5) in the notes
+    >>> blossom(quartic, [1, 1, 1, 1, 5, 5, 5, 5], [1, 1, 3, 5]).tolist()   # P(1, 1, 3, 5), the notes' f(1, 1, 3, 5)
     [2.5, 5.5]
     >>> blossom(quartic, [1, 1, 1, 1, 5, 5, 5, 5], [3, 5, 1, 1]).tolist()   # symmetric in its arguments
     [2.5, 5.5]
 
     Ref: L. Ramshaw (1989), Blossoms are polar forms, CAGD 6.
     """
-    pts, kn, n = _spline(points, knots)
+    pts, kn, n = checked_bspline(points, knots)
     u = _as_arguments(args, n)
     if u.min() < kn[0] or u.max() > kn[-1]:
         raise ValueError(f"args: expected values within the knot vector [{kn[0]}, {kn[-1]}], got {u.tolist()}")
@@ -402,7 +421,7 @@ def polar_values(points, knots, labels) -> np.ndarray:
     labels that are known to be consistent, such as those of refined or
     degree-raised control points.
     """
-    pts, kn, n = _spline(points, knots)
+    pts, kn, n = checked_bspline(points, knots)
     u = as_float_array(labels, "labels")
     if u.ndim != 2 or u.shape[1] != n:
         raise ValueError(f"labels: expected shape (k, {n}), one row of {n} arguments per value, got {u.shape}")
@@ -425,17 +444,18 @@ def elevated_polar_values(points, knots, labels) -> np.ndarray:
 
 
 def bezier_blossom(points, args) -> np.ndarray:
-    """Polar value f(u_1, ..., u_n) of a Bézier curve over [0, 1]: de Casteljau with a new u per level. Notes §6.1.
+    """Polar value P(u_1, ..., u_n) of a Bézier curve over [0, 1]: de Casteljau with a new u per level. Notes §6.1.
 
     points: (n+1, d), args: (n,) -> (d,). Degree 0 takes no arguments.
     """
-    pts = as_points(points)
-    n = len(pts) - 1
-    u = _as_arguments(args, n)
-    if n == 0:
-        return pts[0].copy()
-    bezier_knots = np.repeat([0.0, 1.0], n)
-    return _segment_blossoms(pts, bezier_knots, n, np.array([n - 1]), u[None, :])[0]
+    level = as_points(points)
+    n = len(level) - 1
+    u = as_float_array(args, "args")
+    if u.shape != (n,):
+        raise ValueError(f"args: a degree-{n} polar form takes {n} arguments, got shape {u.shape}")
+    for u_r in u:  # level r: the de Casteljau step with the r-th argument
+        level = (1 - u_r) * level[:-1] + u_r * level[1:]
+    return level[0]
 
 
 def _elementary_symmetric(u: np.ndarray) -> np.ndarray:
@@ -473,13 +493,13 @@ def power_blossom(coeffs, args):
 
 
 def bspline_basis(knots, degree: int, i: int, t):
-    """Values of the i-th basis function B_i^n: the explicit B-spline with coefficient 1 at i, 0 elsewhere. Notes §6.14.
+    """Values of the i-th basis function N_i^n: the explicit B-spline with coefficient 1 at i, 0 elsewhere. Notes §6.14.
 
     knots: (c+n-1,); 0 <= i < c. t in the domain: a number -> float, k numbers -> (k,).
 
     >>> from cagd_ref.bspline import bspline_basis
     >>> knots = [0, 0, 0, 2, 3, 4, 5, 5, 5]            # Figure 6.28's cubic, seven basis functions
-    >>> [round(bspline_basis(knots, 3, 2, t), 6) for t in (0.0, 5 / 3, 2.0, 5.0)]   # the function of f(0, 2, 3)
+    >>> [round(bspline_basis(knots, 3, 2, t), 6) for t in (0.0, 5 / 3, 2.0, 5.0)]   # the function of P(0, 2, 3)
     [0.0, 0.552984, 0.555556, 0.0]
     >>> round(sum(bspline_basis(knots, 3, i, 2.5) for i in range(7)), 12)         # a partition of unity
     1.0
@@ -487,7 +507,7 @@ def bspline_basis(knots, degree: int, i: int, t):
     Ref: C. de Boor, On calculating with B-splines, J. Approx. Theory 6, 1972; M. G. Cox, The numerical
     evaluation of B-splines, J. Inst. Maths Applics 10, 1972.
     """
-    kn, n = _knots_of_degree(knots, degree)
+    kn, n = checked_knots(knots, degree)
     c = len(kn) - n + 1
     i = as_count(i, "i")
     if i >= c:
@@ -499,16 +519,10 @@ def bspline_basis(knots, degree: int, i: int, t):
     return float(values[0]) if scalar else values
 
 
-def _ratio(numerator: np.ndarray, denominator: np.ndarray) -> np.ndarray:
-    """numerator / denominator, with 0 where the denominator is 0 (the recurrence's 0/0 = 0 rule)."""
-    safe = np.where(denominator == 0, 1.0, denominator)
-    return np.where(denominator == 0, 0.0, numerator / safe)
-
-
 def basis_matrix(knots, degree: int, t) -> np.ndarray:
     """All c basis functions at k parameters by the Cox-de Boor recurrence: (k, c), rows sum to 1. Notes §6.14.3.
 
-    B_m^p = ω_m^p B_m^(p-1) + (1 - ω_(m+1)^p) B_(m+1)^(p-1) with
+    N_m^p = ω_m^p N_m^(p-1) + (1 - ω_(m+1)^p) N_(m+1)^(p-1) with
     ω_m^p(t) = (t - u_m) / (u_(m+p) - u_m), or 0 where u_(m+p) = u_m, on the
     knots padded with one copy of each end knot (the c + n + 1 convention).
     A number t gives one row, (1, c).
@@ -516,17 +530,17 @@ def basis_matrix(knots, degree: int, t) -> np.ndarray:
     Ref: C. de Boor, On calculating with B-splines, J. Approx. Theory 6, 1972; M. G. Cox, The numerical
     evaluation of B-splines, J. Inst. Maths Applics 10, 1972.
     """
-    kn, n = _knots_of_degree(knots, degree)
+    kn, n = checked_knots(knots, degree)
     ts, _ = as_parameter(t)
-    _in_domain(ts, kn, n)
     padded = np.concatenate([kn[:1], kn, kn[-1:]])
     # Degree 0: one 1 per row, in the span that contains t (which handles the right end).
     basis = np.zeros((len(ts), len(padded) - 1))
-    basis[np.arange(len(ts)), _spans(kn, n, ts) + 1] = 1.0
+    basis[np.arange(len(ts)), knot_span(kn, n, ts) + 1] = 1.0
     tt = ts[:, None]
     for p in range(1, n + 1):
         count = len(padded) - p
-        omega = _ratio(tt - padded[:count], padded[p : p + count] - padded[:count])
+        rise, run = tt - padded[:count], padded[p : p + count] - padded[:count]
+        omega = np.divide(rise, run, out=np.zeros_like(rise), where=run != 0)  # 0/0 = 0 at repeated knots
         basis = omega[:, :-1] * basis[:, :-1] + (1 - omega[:, 1:]) * basis[:, 1:]
     return basis
 
@@ -538,20 +552,20 @@ def greville(knots, degree: int) -> np.ndarray:
     >>> np.round(greville([0, 0, 0, 2, 3, 4, 5, 5, 5], 3), 6).tolist()   # Figure 6.28: 0, 2/3, 5/3, 3, 4, 14/3, 5
     [0.0, 0.666667, 1.666667, 3.0, 4.0, 4.666667, 5.0]
     """
-    kn, n = _knots_of_degree(knots, degree)
+    kn, n = checked_knots(knots, degree)
     sums = np.convolve(kn, np.ones(n), mode="valid")
     return sums / n
 
 
 def explicit_bspline(coeffs, knots) -> np.ndarray:
-    """Planar control points (greville_i, coeffs_i) of the explicit B-spline y = Σ coeffs_i B_i(t): (c, 2). Notes §6.9.
+    """Planar control points (greville_i, coeffs_i) of the explicit B-spline y = Σ coeffs_i N_i(t): (c, 2). Notes §6.9.
 
     Because the Greville abscissae reproduce x = t, the curve's x-coordinate is the parameter.
     """
     y = as_float_array(coeffs, "coeffs")
     if y.ndim != 1:
         raise ValueError(f"coeffs: expected a 1-D array of c coefficients, got shape {y.shape}")
-    pts, kn, n = _spline(y[:, None], knots)
+    pts, kn, n = checked_bspline(y[:, None], knots)
     return np.column_stack([greville(kn, n), pts[:, 0]])
 
 
@@ -564,7 +578,7 @@ def to_scipy(points, knots) -> tuple[np.ndarray, np.ndarray, int]:
     The usual convention has one more knot at each end, which never affects the
     curve on its domain; we repeat the first and last knot.
     """
-    pts, kn, n = _spline(points, knots)
+    pts, kn, n = checked_bspline(points, knots)
     return np.concatenate([kn[:1], kn, kn[-1:]]), pts, n
 
 
@@ -588,7 +602,7 @@ def from_scipy(t, c, k) -> tuple[np.ndarray, np.ndarray]:
 
 def degree(points, knots) -> int:
     """The degree len(knots) - len(points) + 1 of a B-spline, after checking it. Notes §6.4.1."""
-    return _spline(points, knots)[2]
+    return checked_bspline(points, knots)[2]
 
 
 def knot_multiplicities(knots) -> tuple[np.ndarray, np.ndarray]:
@@ -602,7 +616,7 @@ def continuity_at_knots(knots, degree: int) -> tuple[np.ndarray, np.ndarray]:
 
     Returns (values (m,), orders (m,) ints); a knot of multiplicity m is C^(n-m).
     """
-    kn, n = _knots_of_degree(knots, degree)
+    kn, n = checked_knots(knots, degree)
     a, b = domain(kn, n)
     values, counts = np.unique(kn, return_counts=True)
     inside = (values > a) & (values < b)
@@ -619,7 +633,7 @@ def hodograph(points, knots) -> tuple[np.ndarray, np.ndarray]:
     last removed. Needs degree n >= 2 and no knot of multiplicity n in the
     domain (the derivative jumps there); `derivative` handles both cases.
     """
-    pts, kn, n = _spline(points, knots)
+    pts, kn, n = checked_bspline(points, knots)
     if n < 2:
         raise ValueError("knots: the hodograph of a degree-1 B-spline has degree 0; use derivative() instead")
     inner = kn[1:-1]
@@ -652,7 +666,7 @@ def derivative(points, knots, t, order: int = 1) -> np.ndarray:
     by the hodograph rule (6.2) applied to its n+1 points, and evaluated.
     At a knot the right-hand derivative is returned (left-hand at the domain's end).
     """
-    pts, kn, n = _spline(points, knots)
+    pts, kn, n = checked_bspline(points, knots)
     order = as_count(order, "order")
     ts, scalar = as_parameter(t)
     _in_domain(ts, kn, n)
@@ -671,11 +685,11 @@ def elevate(points, knots) -> tuple[np.ndarray, np.ndarray]:
     """Raise the degree by one, same curve: every knot value in the domain gains one multiplicity. Notes §6.13.5.
 
     The new control point with label (u_0, ..., u_n) is the degree n+1 polar
-    value F(u_0..u_n), the mean of the n+1 old polar values f(u without u_j).
+    value F(u_0..u_n), the mean of the n+1 old polar values P(u without u_j).
     Returns (points (c', d), knots) with c' = c + m - 1, m the number of distinct
     knot values in the domain, its two ends included (a Bézier curve: c + 1).
     """
-    pts, kn, n = _spline(points, knots)
+    pts, kn, n = checked_bspline(points, knots)
     a, b = kn[n - 1], kn[len(kn) - n]
     values = np.unique(kn)
     new_knots = np.sort(np.concatenate([kn, values[(values >= a) & (values <= b)]]))

@@ -1,7 +1,7 @@
 """B-spline figures in the notes' knot convention: polar labels, segment-coloured curves, knot-interval labels.
 
 A degree-n B-spline with c control points has c + n - 1 knots and control
-point i carries the polar label f(t_i, ..., t_(i+n-1)) (Notes §6.1-6.3). These
+point i carries the polar label P(t_i, ..., t_(i+n-1)) (Notes §6.1-6.3). These
 helpers draw such curves segment by segment, label their control points and de
 Boor triangles, and hang knot intervals on the edges or vertices of a polygon
 (Notes §6.13). Chapter 6 and its explorers draw with them.
@@ -10,6 +10,7 @@ Boor triangles, and hang knot intervals on the edges or vertices of a polygon
 from __future__ import annotations
 
 import numpy as np
+from matplotlib.transforms import Bbox
 
 from cagd_ref._validation import as_count, as_float_array, as_parameter, as_points
 from cagd_ref.bspline import bezier_segment_intervals, bezier_segments, de_boor, degree, domain
@@ -24,6 +25,9 @@ __all__ = [
     "segment_samples",
     "closed_curve_points",
     "plot_bspline",
+    "outward_directions",
+    "label_points_outward",
+    "place_labels",
     "interval_label_positions",
     "plot_knot_intervals",
     "knot_label",
@@ -44,7 +48,7 @@ def polar_label(args, name: str = "P") -> str:
 
 
 def control_point_labels(knots, degree: int, name: str = "P") -> list[str]:
-    """Polar labels f(t_i, ..., t_(i+n-1)) of the c control points of a degree-n B-spline. Notes §6.1, §6.2.
+    """Polar labels P(t_i, ..., t_(i+n-1)) of the c control points of a degree-n B-spline. Notes §6.1, §6.2.
 
     knots: (c+n-1,) in the notes' convention. Returns c strings.
     """
@@ -56,7 +60,7 @@ def control_point_labels(knots, degree: int, name: str = "P") -> list[str]:
 def triangle_labels(knots, degree: int, span: int, t: float) -> list[list[str]]:
     """Polar labels of the de Boor triangle at t on span j. Notes §6.8.
 
-    Point i of level r is f(t^r, t_(j-n+1+i+r) ... t_(j+i)).
+    Point i of level r is P(t^r, t_(j-n+1+i+r) ... t_(j+i)).
 
     Returns one list of strings per level (n+1-r labels on level r).
     """
@@ -109,6 +113,75 @@ def _point_labels(labels, points: np.ndarray, knots, n: int):
     return labels
 
 
+def outward_directions(points, closed: bool = False) -> np.ndarray:
+    """Unit vectors (c, 2) pointing away from a planar polygon at each vertex: where a vertex label goes.
+
+    At an inner vertex the direction is P_i minus the midpoint of its neighbours (the curve of a
+    control polygon bends the other way); at the ends of an open polygon it continues the end leg
+    outwards. Where a vertex lies on the line of its neighbours, the normal pointing away from the
+    polygon's centre is used.
+    """
+    pts = as_points(points)
+    if len(pts) < 2:
+        return np.tile([0.0, 1.0], (len(pts), 1))
+    before = np.roll(pts, 1, axis=0)
+    after = np.roll(pts, -1, axis=0)
+    if not closed:
+        before[0], after[-1] = 2 * pts[0] - pts[1], 2 * pts[-1] - pts[-2]
+    away = pts - 0.5 * (before + after)
+    chord = after - before
+    normal = np.column_stack([-chord[:, 1], chord[:, 0]])
+    normal *= np.where(np.einsum("ij,ij->i", normal, pts - pts.mean(axis=0)) < 0, -1.0, 1.0)[:, None]
+    flat = np.linalg.norm(away, axis=1) <= 1e-3 * np.maximum(np.linalg.norm(chord, axis=1), 1e-300)
+    if not closed:  # the ends continue their legs outwards
+        away[0], away[-1] = pts[0] - pts[1], pts[-1] - pts[-2]
+        flat[[0, -1]] = np.linalg.norm(away[[0, -1]], axis=1) == 0
+    direction = np.where(flat[:, None], normal, away)
+    length = np.linalg.norm(direction, axis=1, keepdims=True)
+    return np.where(length > 0, direction / np.where(length > 0, length, 1.0), [0.0, 1.0])
+
+
+def _alignment(u: np.ndarray) -> tuple[str, str]:
+    """Text alignment for a label placed in the direction u (unit vector) from its point."""
+    ha = "left" if u[0] > 0.38 else "right" if u[0] < -0.38 else "center"
+    va = "bottom" if u[1] > 0.38 else "top" if u[1] < -0.38 else "center"
+    return ha, va
+
+
+def label_points_outward(ax, points, labels, closed: bool = False, distance: float = 6.0, directions=None,
+                         fontsize: float = 8, **style):
+    """Write labels next to the vertices of a planar polygon, each on the side facing away from it. Notes §6.1.
+
+    points: (c, 2); labels: c strings ("" skips a point). `directions` (c, 2) overrides the
+    directions of `outward_directions` (in data units; rows of zeros keep the computed one).
+    The directions are corrected for the axes' current scale, so they also work without an
+    equal aspect. `style` goes to the texts (e.g. color). Returns ax.
+    """
+    pts = as_points(points)
+    if len(labels) != len(pts):
+        raise ValueError(f"labels: expected {len(pts)} strings, got {len(labels)}")
+    u = outward_directions(pts, closed)
+    if directions is not None:
+        given = as_float_array(directions, "directions")
+        if given.shape != pts.shape:
+            raise ValueError(f"directions: expected shape {pts.shape}, got {given.shape}")
+        keep = np.linalg.norm(given, axis=1) == 0
+        u = np.where(keep[:, None], u, given)
+    ax.autoscale_view()
+    corner = ax.transData.transform(pts.mean(axis=0))
+    scale = np.abs(ax.transData.transform(pts.mean(axis=0) + 1.0) - corner)
+    scale = np.where(scale > 0, scale, 1.0)
+    for text, point, vector in zip(labels, pts, u):
+        if not text:
+            continue
+        screen = vector * scale
+        screen /= max(np.linalg.norm(screen), 1e-300)
+        ha, va = _alignment(screen)
+        ax.annotate(text, point, xytext=tuple(distance * screen), textcoords="offset points", fontsize=fontsize,
+                    ha=ha, va=va, **style)
+    return ax
+
+
 def _knot_value_label(ax, text: str, where, tangent, polygon: np.ndarray) -> None:
     """Write a knot value beside the curve, on the side away from the nearest control point.
 
@@ -132,7 +205,7 @@ def plot_bspline(ax, points, knots, labels=True, knot_marks: bool = True, knot_v
                  **style):
     """Draw a planar B-spline: its polygon, each segment in its own colour, the knots on the curve. Notes §6.2, §6.3.
 
-    points: (c, 2); knots: (c+n-1,). labels: True (polar labels f(...)),
+    points: (c, 2); knots: (c+n-1,). labels: True (polar labels P(...)),
     "index" (P_0, P_1, ...), False, or c strings. `knot_marks` ticks the
     curve at the knots, `knot_values` writes t=... there. With `bezier_polygons` the
     Bézier control polygon of every segment is drawn too (dotted). `style`
@@ -140,7 +213,7 @@ def plot_bspline(ax, points, knots, labels=True, knot_marks: bool = True, knot_v
     """
     pts = as_points(points)
     n = degree(pts, knots)
-    plot_control_polygon(ax, pts, labels=_point_labels(labels, pts, knots, n), legend=polygon_legend)
+    plot_control_polygon(ax, pts, labels=False, legend=polygon_legend)
     intervals, samples = segment_samples(pts, knots)
     for k, curve in enumerate(samples):
         color = colors[k % len(colors)]
@@ -156,6 +229,94 @@ def plot_bspline(ax, points, knots, labels=True, knot_marks: bool = True, knot_v
     if bezier_polygons:
         for k, segment in enumerate(bezier_segments(pts, knots)):
             ax.plot(*segment.T, "s:", color=colors[k % len(colors)], markersize=3, linewidth=1, alpha=0.8)
+    names = _point_labels(labels, pts, knots, n)
+    if names:
+        label_points_outward(ax, pts, names)
+    return ax
+
+
+def _obstacle_pixels(ax, spacing: float = 2.5) -> np.ndarray:
+    """Display-pixel points (m, 2) along every visible line and marker of ax, `spacing` px apart on lines."""
+    found = [np.empty((0, 2))]
+    for line in ax.get_lines():
+        if not line.get_visible():
+            continue
+        xy = line.get_transform().transform(np.asarray(line.get_xydata(), dtype=float))
+        xy = xy[np.all(np.isfinite(xy), axis=1)]
+        if len(xy) == 0:
+            continue
+        found.append(xy)
+        if line.get_linestyle() not in ("None", "", " ") and len(xy) > 1:
+            steps = np.maximum(np.ceil(np.linalg.norm(np.diff(xy, axis=0), axis=1) / spacing), 1).astype(int)
+            for start, end, count in zip(xy[:-1], xy[1:], steps):
+                if count > 1:
+                    found.append(start + np.linspace(0, 1, count + 1)[1:-1, None] * (end - start))
+    return np.vstack(found)
+
+
+def place_labels(ax, points, labels, prefer=None, distances=(5.0, 9.0, 14.0), fontsize: float = 8, candidates=None,
+                 **style):
+    """Write labels next to points where they cover the fewest lines, markers and other labels. Notes §6.
+
+    For every label, 16 directions at each of `distances` (points) are tried, in turn, and the
+    place whose box covers the fewest drawn line pixels and markers of `ax` wins; any overlap with a
+    text already on `ax` (or inside the axes' frame edge) rules a place out when another is free.
+    `prefer` (c, 2) gives, per point, a direction to favour on ties (e.g. `outward_directions`);
+    `candidates` (c, k, 2) replaces the 16 directions by k unit vectors (data units) per point.
+    Call it after everything else is drawn and the limits are set. Returns ax.
+    """
+    pts = as_points(points)
+    if len(labels) != len(pts):
+        raise ValueError(f"labels: expected {len(pts)} strings, got {len(labels)}")
+    fig = ax.figure
+    ax.get_xlim()  # settles pending autoscaling
+    ax.apply_aspect()  # and the box an equal aspect asks for: the data transform is final
+    renderer = fig.canvas.get_renderer()
+    obstacles = _obstacle_pixels(ax)
+    frame = ax.get_window_extent(renderer)
+    taken = [t.get_window_extent(renderer) for t in ax.texts if t.get_visible() and t.get_text().strip()]
+    angles = np.linspace(0, 2 * np.pi, 16, endpoint=False)
+    unit = np.column_stack([np.cos(angles), np.sin(angles)])
+    prefer_u = np.zeros_like(pts) if prefer is None else as_float_array(prefer, "prefer")
+    pixels_per_point = fig.dpi / 72.0
+    per_point = None if candidates is None else as_float_array(candidates, "candidates")
+    to_screen = np.abs(ax.transData.transform(pts.mean(axis=0) + 1.0) - ax.transData.transform(pts.mean(axis=0)))
+    for number, (text, point, favour) in enumerate(zip(labels, pts, prefer_u)):
+        if not text:
+            continue
+        if per_point is not None:  # the caller's directions, turned into screen directions
+            unit = per_point[number] * to_screen
+            unit = unit / np.maximum(np.linalg.norm(unit, axis=1, keepdims=True), 1e-300)
+        # The label's size does not depend on where it goes: measure it once.
+        probe = ax.annotate(text, point, fontsize=fontsize, **style)
+        size = probe.get_window_extent(renderer)
+        probe.remove()
+        width, height = size.width, size.height
+        anchor = ax.transData.transform(point)
+        best, best_score = None, np.inf
+        for distance in distances:
+            for u in unit:
+                ha, va = _alignment(u)
+                x = anchor[0] + distance * u[0] * pixels_per_point
+                y = anchor[1] + distance * u[1] * pixels_per_point
+                x0 = x - {"left": 0.0, "center": 0.5, "right": 1.0}[ha] * width
+                y0 = y - {"bottom": 0.0, "center": 0.5, "top": 1.0}[va] * height
+                box = Bbox.from_bounds(x0, y0, width, height)
+                inside = ((obstacles[:, 0] >= box.x0 - 1) & (obstacles[:, 0] <= box.x1 + 1)
+                          & (obstacles[:, 1] >= box.y0 - 1) & (obstacles[:, 1] <= box.y1 + 1))
+                clash = sum(box.overlaps(other) for other in taken)
+                outside = not (frame.x0 + 2 <= box.x0 and box.x1 <= frame.x1 - 2
+                               and frame.y0 + 2 <= box.y0 and box.y1 <= frame.y1 - 2)
+                liking = float(u @ favour) / max(float(np.linalg.norm(favour)), 1e-300)
+                score = 1000 * (clash + outside) + np.count_nonzero(inside) + 0.08 * distance - 0.5 * liking
+                if score < best_score:
+                    best, best_score, best_box = (tuple(distance * u), ha, va), score, box
+            if best_score < 1:  # a clean place at this distance: do not go farther
+                break
+        offset, ha, va = best
+        ax.annotate(text, point, xytext=offset, textcoords="offset points", fontsize=fontsize, ha=ha, va=va,
+                    **style)
+        taken.append(best_box)
     return ax
 
 
@@ -184,8 +345,12 @@ def interval_label_positions(points, intervals, degree: int | None = None) -> np
     return np.vstack([pts[0] + ahead * start_step, pts, pts[-1] + behind * end_step])
 
 
-def _label_normals(places: np.ndarray, closed: bool) -> np.ndarray:
-    """Unit normals (m, 2) to the polygon through the label places: outward when closed, to the left when open."""
+def _label_normals(places: np.ndarray, closed: bool, points: np.ndarray | None = None) -> np.ndarray:
+    """Unit normals (m, 2) to the polygon through the label places, pointing away from the polygon.
+
+    Closed: away from its centre. Open: to the side the neighbouring vertices' labels face
+    (`outward_directions` of `points`), so interval labels and point labels stay off the curve.
+    """
     if closed:
         tangents = np.roll(places, -1, axis=0) - np.roll(places, 1, axis=0)
     else:
@@ -194,6 +359,10 @@ def _label_normals(places: np.ndarray, closed: bool) -> np.ndarray:
     normals /= np.maximum(np.linalg.norm(normals, axis=1, keepdims=True), 1e-300)
     if closed:
         normals *= np.sign(np.einsum("ij,ij->i", normals, places - places.mean(axis=0)) + 1e-300)[:, None]
+    elif points is not None and len(points) > 1:
+        nearest = np.argsort(np.linalg.norm(places[:, None] - points[None], axis=2), axis=1)[:, :2]
+        hint = outward_directions(points)[nearest].sum(axis=1)
+        normals *= np.where(np.einsum("ij,ij->i", normals, hint) < 0, -1.0, 1.0)[:, None]
     return normals
 
 
@@ -205,9 +374,9 @@ def plot_knot_intervals(ax, points, intervals, degree: int | None = None, text_c
     the notes; phantom edges/vertices for the end-condition intervals are
     drawn dotted. `label` is the letter of the labels (None writes the bare
     numbers), written in `text_color` and pushed
-    off the polygon along its normal (side=1: outwards or to the left, -1: the
-    other way, so two labellings of one polygon stay apart); `style` goes to
-    the polygon. Returns ax.
+    off the polygon along its normal (side=1: outwards, away from the curve,
+    -1: the other way, so two labellings of one polygon stay apart); `style`
+    goes to the polygon. Returns ax.
     """
     pts = as_points(points)
     d = as_float_array(intervals, "intervals")
@@ -218,12 +387,17 @@ def plot_knot_intervals(ax, points, intervals, degree: int | None = None, text_c
     if degree is None and len(places) > len(pts) - 1:
         ax.plot(*np.vstack([places[0], pts[0]]).T, ":", color="0.5")
         ax.plot(*np.vstack([pts[-1], places[-1]]).T, ":", color="0.5")
-    offsets = 10 * side * _label_normals(places, degree is not None)
+    normals = _label_normals(places, degree is not None, pts)
     # The notes number an open curve's intervals so that d_i sits on edge P_i P_(i+1) (or vertex P_i):
     # the end-condition intervals before P_0 get negative numbers.
     first = 0 if degree is not None else -((len(d) - len(pts) + 1) // 2)
-    for i, (value, place, offset) in enumerate(zip(d, places, offsets), start=first):
-        text = knot_label(value) if label is None else f"${label}_{{{i}}}$={knot_label(value)}"
-        ax.annotate(text, place, xytext=offset, textcoords="offset points", fontsize=8, color=text_color,
-                    ha="center", va="center")
+    texts = [knot_label(value) if label is None else f"${label}_{{{i}}}$={knot_label(value)}"
+             for i, value in enumerate(d, start=first)]
+    if degree is None:  # open: each label on the side of its edge where it covers least
+        both_sides = np.stack([side * normals, -side * normals], axis=1)
+        return place_labels(ax, places, texts, prefer=side * normals, distances=(7.0, 11.0), candidates=both_sides,
+                            color=text_color)
+    for text, place, normal in zip(texts, places, normals):
+        ax.annotate(text, place, xytext=tuple(10 * side * normal), textcoords="offset points", fontsize=8,
+                    color=text_color, ha="center", va="center")
     return ax

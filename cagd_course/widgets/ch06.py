@@ -1,7 +1,7 @@
 """Explorers of chapter 6 of the notes (B-spline curves), and the drawing helpers they share with the chapter.
 
 The helpers draw a B-spline in the notes' knot convention (c + n - 1 knots,
-control point i labelled f(t_i, ..., t_(i+n-1))): the curve segment by
+control point i labelled P(t_i, ..., t_(i+n-1))): the curve segment by
 segment, polar labels on the control points, knot-interval labels on the
 edges or vertices of the polygon. The explorers use them for the knot vector,
 the de Boor triangle, knot insertion, interval splitting and local control.
@@ -35,6 +35,9 @@ from ..plotting.bsplines import (
     closed_curve_points,
     control_point_labels,
     knot_label,
+    label_points_outward,
+    outward_directions,
+    place_labels,
     plot_bspline,
     plot_knot_intervals,
     segment_samples,
@@ -148,7 +151,9 @@ class KnotVectorEditor(TwoPanels, Explorer):
         lower.set_xlim(0, self.end)
         lower.set_ylim(0, 1.15)
         lower.set_yticks([0, 1])
-        lower.set_xlabel(f"t   (basis functions $B_0$ ... $B_{{{len(self.points) - 1}}}$, left to right)", fontsize=8)
+        last = len(self.points) - 1
+        lower.set_xlabel(f"t   (basis functions $N_0^{self.degree}$ ... $N_{{{last}}}^{self.degree}$, left to right)",
+                         fontsize=8)
         bare_axes(ax)
 
     def describe(self, state: dict) -> str:
@@ -211,10 +216,6 @@ class DeBoorExplorer(Explorer):
             style = {"marker": "o", "markersize": 4 + (r == 0) * 2, "linewidth": 1.4 if r else 2.5}
             legend = {0: "the span's control points", 1: "levels 1, 2, ..."}.get(r)
             ax.plot(*level.T, color=f"C{(r + 4) % 10}", label=legend, **style)
-        # Only the span's points and the newest level are labelled: deeper levels crowd near the curve.
-        for r in sorted({0, step}):
-            for text, place in zip(state["labels"][r], state["levels"][r]):
-                ax.annotate(text, place, xytext=(3, 5 if r == 0 else -11), textcoords="offset points", fontsize=8)
         if step == self.degree:
             ax.plot(*state["point"], "k*", markersize=13, label=f"P({state['t']:.2f})")
         j = state["span"]
@@ -222,6 +223,12 @@ class DeBoorExplorer(Explorer):
         ax.set_title(f"de Boor at t = {state['t']:.2f}, span {span}", fontsize=10)
         ax.legend(fontsize=8, loc="lower center", ncol=3)
         bare_axes(ax)
+        # Only the span's points and the newest level are labelled (deeper levels crowd near the curve),
+        # each label where it covers the fewest lines.
+        first = state["levels"][0]
+        place_labels(ax, first, state["labels"][0], prefer=outward_directions(first))
+        if step:
+            place_labels(ax, state["levels"][step], state["labels"][step])
 
     def describe(self, state: dict) -> str:
         return f"P({state['t']:.2f}) = {_fmt(state['point'])}"
@@ -288,15 +295,14 @@ class KnotInsertionExplorer(Explorer):
         new = state["points"][state["new"]]
         ax.plot(*new.T, "o", color="C3", markersize=8, markerfacecolor="white", markeredgewidth=2, label="new points")
         labels = control_point_labels(state["knots"], self.degree)
-        for k, i in enumerate(state["new"]):  # alternate above and below: new points lie close together
-            ax.annotate(labels[i], state["points"][i], xytext=(4, 5) if k % 2 == 0 else (4, -13),
-                        textcoords="offset points", fontsize=8, color="C3")
         if state["point"] is not None:
             ax.plot(*state["point"], "k*", markersize=12, label=f"P({state['t']:.2f}) exposed")
         ax.set_title(f"inserting t = {state['t']:.2f} {state['inserted']}×; curve moved by {state['deviation']:.1e}",
                      fontsize=10)
         ax.legend(fontsize=8, loc="lower center", ncol=2)
         bare_axes(ax)
+        # New points lie close together: each label goes where it covers the fewest lines.
+        place_labels(ax, state["points"][state["new"]], [labels[i] for i in state["new"]], color="C3")
 
     def describe(self, state: dict) -> str:
         knots = ", ".join(knot_label(k) for k in state["knots"])
@@ -306,7 +312,7 @@ class KnotInsertionExplorer(Explorer):
 
 
 def _exposed_point(points: np.ndarray, knots: np.ndarray, n: int, t: float) -> np.ndarray:
-    """The control point labelled f(t, ..., t), which exists once t is an n-fold knot: it is P(t)."""
+    """The control point labelled P(t, ..., t), which exists once t is an n-fold knot: it is the curve point P(t)."""
     labels = knots[np.arange(len(points))[:, None] + np.arange(n)]
     return points[np.flatnonzero(np.all(labels == t, axis=1))[0]]
 
@@ -460,7 +466,8 @@ class LocalControlExplorer(Explorer):
             moved = k in state["changed"]
             ax.plot(*curve.T, color="C3" if moved else "C0", linewidth=2.2)
         ax.plot(*np.vstack([new[:, 0], new[-1:, -1]]).T, "k|", markersize=9)
-        plot_control_polygon(ax, state["points"])
+        plot_control_polygon(ax, state["points"], labels=False)
+        label_points_outward(ax, state["points"], [f"$P_{{{i}}}$" for i in range(len(self.points))], fontsize=10)
         ax.plot(*self.points[state["index"]], "o", color="0.6", markersize=7)
         ax.plot(*state["points"][state["index"]], "o", color="C3", markersize=9)
         ax.plot([], [], color="C3", label="changed segments")

@@ -42,3 +42,33 @@ def test_closed_curve_points_are_periodic():
     ts = np.array([0.3, 1.7, 4.9])
     once_round = bsplines.closed_curve_points(pentagon, d, 3, ts + d.sum())
     assert np.allclose(bsplines.closed_curve_points(pentagon, d, 3, ts), once_round)
+
+
+def test_outward_directions_point_away_from_the_polygon():
+    # An arch: the inner vertices' labels go up and out, the end labels continue the end legs.
+    arch = np.array([[0.0, 0.0], [1.0, 2.0], [3.0, 2.0], [4.0, 0.0]])
+    u = bsplines.outward_directions(arch)
+    assert np.allclose(np.linalg.norm(u, axis=1), 1)
+    assert u[1, 1] > 0 and u[2, 1] > 0  # above the arch, where the curve is not
+    assert np.allclose(u[0], -np.array([1.0, 2.0]) / np.sqrt(5))  # continues the leg P1 -> P0
+    # A square, closed: every label points away from its centre.
+    square = np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])
+    closed = bsplines.outward_directions(square, closed=True)
+    assert (np.einsum("ij,ij->i", closed, square - 0.5) > 0).all()
+
+
+def test_place_labels_keeps_a_label_off_a_line_through_its_point():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(4, 3))
+    ax.plot([0, 10], [5, 5], color="k")  # a horizontal line through the labelled point
+    ax.set(xlim=(0, 10), ylim=(0, 10))
+    bsplines.place_labels(ax, [[5.0, 5.0]], ["a label"])
+    fig.canvas.draw()
+    box = ax.texts[0].get_window_extent()
+    line_y = ax.transData.transform((5.0, 5.0))[1]
+    assert not (box.y0 <= line_y <= box.y1)  # above or below the line, not across it
+    plt.close(fig)

@@ -417,7 +417,7 @@ EXERCISES = [
         reference=bspline.bspline_basis,
         cases=bspline_basis_cases,
         compare=close(1e-9, 1e-12),
-        hint="B_i is the B-spline with coefficient 1 at i and 0 elsewhere: run de_boor on those 1-D "
+        hint="N_i is the B-spline with coefficient 1 at i and 0 elsewhere: run de_boor on those 1-D "
         "'points'. Or use Cox-de Boor on the knots padded with one extra end knot on each side, with 0/0 = 0. "
         "A number t gives a float, an array (k,).",
         rules={
@@ -448,7 +448,7 @@ EXERCISES = [
         compare=close(1e-9, 1e-9),
         hint="Open curve: knots = cumulative sums of the intervals; insert the knot t_q + fraction d_q and "
         "return the differences of the new knots. Closed curve of degree n: P_i has the label "
-        "f(t_(i+s), ..., t_(i+s+n-1)) with s = -((n-1)//2) on the periodic knots; only the n-1 points whose "
+        "P(t_(i+s), ..., t_(i+s+n-1)) with s = -((n-1)//2) on the periodic knots; only the n-1 points whose "
         "labels contain both ends of interval q are replaced (by n new ones).",
         rules={
             EDGE: "Only intervals of the domain can be split, $n-1\\le q\\le c-2$; the others hang past the ends of "

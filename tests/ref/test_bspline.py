@@ -73,7 +73,7 @@ def test_every_public_name_is_tested():
         "basis_matrix", "greville", "explicit_bspline", "to_scipy", "from_scipy", "degree", "domain",
         "knot_multiplicities", "continuity_at_knots", "hodograph", "derivative", "elevate",
         "polar_values", "elevated_polar_values", "bezier_end_knots", "periodic_closed",
-        "circle_approximation", "combine_bezier",
+        "circle_approximation", "combine_bezier", "checked_bspline", "checked_knots", "knot_span",
     }
     assert set(b.__all__) == tested
 
@@ -772,3 +772,20 @@ def test_results_are_fresh_arrays():
     result = b.de_boor_triangle(points, knots, a)[0][0]
     result[:] = 99
     assert not np.any(points == 99)
+
+
+def test_knot_span_finds_the_span_and_gives_the_last_one_the_right_end():
+    knots = [0, 0, 0, 1, 2, 2, 3, 3, 3]  # cubic over [0, 3], the knot 2 doubled
+    assert b.knot_span(knots, 3, 0.0) == 2
+    np.testing.assert_array_equal(b.knot_span(knots, 3, [0.5, 1.0, 1.999, 2.0, 3.0]), [2, 3, 3, 5, 5])
+    with pytest.raises(ValueError, match="t: expected values in the domain"):
+        b.knot_span(knots, 3, 3.5)
+
+
+def test_checked_bspline_gives_fresh_arrays_and_the_degree():
+    points, knots = [[0, 0], [1, 2], [2, 0], [3, 1]], [0, 0, 1, 1, 1]
+    with pytest.raises(ValueError, match="more than the degree"):
+        b.checked_bspline(points, knots)  # degree 2: the knot 1 three times
+    pts, kn, n = b.checked_bspline(points, [0, 1, 2, 3])
+    assert n == 1 and pts.dtype == float and kn.tolist() == [0, 1, 2, 3]
+    assert b.checked_knots([0, 0, 1, 1], 2)[1] == 2

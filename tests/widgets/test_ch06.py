@@ -40,7 +40,7 @@ def test_multiplicity_lowers_the_continuity_at_u2(multiplicity, order):
     assert orders[joints == 2.0][0] == order
     assert np.array_equal(state["continuity"], orders)
     if multiplicity == 3:
-        # A triple knot in a cubic: the curve passes through the control point labelled f(2, 2, 2).
+        # A triple knot in a cubic: the curve passes through the control point labelled P(2, 2, 2).
         assert np.any(np.all(np.isclose(POINTS, de_boor(POINTS, state["knots"], 2.0)), axis=1))
 
 
