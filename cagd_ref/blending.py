@@ -7,7 +7,9 @@ the sets the notes discuss (cubic Bézier, Timmer's parametric cubic, Ball's
 cubic, the Overhauser / Catmull-Rom segment and the notes' rational example),
 evaluates curves from them and converts the cubic forms to Bézier control
 points; `cagd_ref.blending_properties` tests a set for the six properties of
-the chapter.
+the chapter. It also holds the course's extensions of the notes: Catmull-Rom curves through points
+at parameters of one's choice (the non-uniform form of Overhauser's construction), and the
+crossing counts that test a set of blending functions for variation diminishing.
 
 Every cubic form is stored once, as a 4x4 table of power coefficients
 (row j holds the coefficients of t^j, column i is f_i); evaluation and the
@@ -20,7 +22,7 @@ from collections.abc import Callable
 
 import numpy as np
 
-from ._validation import as_count, as_float_array, as_parameter, as_points
+from ._validation import as_count, as_float_array, as_parameter, as_points, as_vector
 from .bezier import bernstein_matrix
 from .polynomials import horner, power_to_bernstein
 
@@ -36,6 +38,10 @@ __all__ = [
     "rational_example_basis",
     "blend",
     "overhauser_point",
+    "catmull_rom_parameters",
+    "catmull_rom_point",
+    "sign_changes",
+    "crossing_counts",
     "conversion_matrix",
     "to_bezier",
     "from_bezier",
@@ -196,6 +202,134 @@ def overhauser_point(points, t) -> np.ndarray:
     window = pts[segment[:, None] + np.arange(4)]  # (k, 4, d): the four points of each t's segment
     curve = np.einsum("ki,kid->kd", local, window)
     return curve[0] if scalar else curve
+
+
+# ---------------------------------------------------------------- Catmull-Rom curves with parameters
+
+
+def catmull_rom_parameters(points, alpha: float = 0.5) -> np.ndarray:
+    """Parameters (c,) for a Catmull-Rom curve through points (c, d): t_0 = 0, t_i+1 - t_i = |P_i+1 - P_i|^alpha.
+
+    alpha = 0 gives the uniform parameters 0, 1, 2, ... of the notes' Overhauser curve, alpha = 1/2 the
+    centripetal and alpha = 1 the chord-length parameters. Consecutive points must differ when alpha > 0.
+    Course extension of Notes §5.3.
+
+    >>> from cagd_ref.blending import catmull_rom_parameters
+    >>> catmull_rom_parameters([(0, 0), (4, 0), (4, 1), (4, 10)], alpha=0.5).tolist()
+    [0.0, 2.0, 3.0, 6.0]
+
+    Ref: C. Yuksel, S. Schaefer and J. Keyser (2011), Parameterization and applications of Catmull-Rom curves,
+    CAD 43(7).
+    """
+    pts = as_points(points, min_count=2)
+    if isinstance(alpha, bool) or not isinstance(alpha, (int, float, np.integer, np.floating)) or not (
+        0.0 <= float(alpha) <= 1.0
+    ):
+        raise ValueError(f"alpha: expected a number in [0, 1], got {alpha!r}")
+    chords = np.linalg.norm(np.diff(pts, axis=0), axis=1)
+    if alpha > 0 and np.any(chords == 0):
+        raise ValueError(f"points: consecutive points coincide (at index {int(np.argmin(chords))}), "
+                         "so their parameters would coincide too")
+    return np.concatenate([[0.0], np.cumsum(chords ** float(alpha))])
+
+
+def catmull_rom_point(points, params, t) -> np.ndarray:
+    """Point(s) of the Catmull-Rom curve through points[1..c-2] with parameters params: (d,) or (k, d).
+
+    points: (c, d) with c >= 4; params: (c,) strictly increasing, point i sits at params[i]; t: a number
+    or a 1-D array in [params[1], params[c-2]]. Segment j (j = 0..c-4) covers [params[j+1], params[j+2]]
+    and is Overhauser's construction with these parameters: the parabola Pi_j through points j..j+2 and
+    the parabola Pi_j+1 through points j+1..j+3, each at its points' parameters, blended linearly across
+    the middle interval,
+
+        C(t) = ((t_j+2 - t) Pi_j(t) + (t - t_j+1) Pi_j+1(t)) / (t_j+2 - t_j+1).
+
+    Each parabola is evaluated by two rounds of linear interpolation (Neville), so the whole segment is
+    three rounds, the pyramid of Barry and Goldman. The curve is C1; with params 0, 1, ..., c-1 it is the
+    uniform curve of `overhauser_point`, shifted by one in t. Course extension of Notes §5.3.
+
+    >>> from cagd_ref.blending import catmull_rom_point
+    >>> row = [(0, 0), (1, 2), (2, 0), (3, 2)]
+    >>> catmull_rom_point(row, [-1, 0, 1, 2], 0.5).tolist()          # uniform: overhauser_point(row, 0.5)
+    [1.5, 1.0]
+    >>> catmull_rom_point(row, [0, 1, 3, 4], [1.0, 3.0]).tolist()    # through points 1 and 2
+    [[1.0, 2.0], [2.0, 0.0]]
+
+    Ref: P. J. Barry and R. N. Goldman (1988), A recursive evaluation algorithm for a class of
+    Catmull-Rom splines, SIGGRAPH '88, 199-204.
+    """
+    pts = as_points(points, min_count=4)
+    knots = as_float_array(params, "params")
+    if knots.shape != (len(pts),):
+        raise ValueError(f"params: expected one parameter per point, shape ({len(pts)},), got shape {knots.shape}")
+    if np.any(np.diff(knots) <= 0):
+        raise ValueError(f"params: expected strictly increasing parameters, got {knots.tolist()}")
+    ts, scalar = as_parameter(t)
+    low, high = knots[1], knots[-2]
+    if np.any((ts < low) | (ts > high)):
+        outside = ts[(ts < low) | (ts > high)][:3].tolist()
+        raise ValueError(f"t: expected values in [params[1], params[c-2]] = [{low:g}, {high:g}], got {outside}")
+    # Segment j has params[j+1] <= t < params[j+2]; the right end params[c-2] belongs to the last segment.
+    segment = np.clip(np.searchsorted(knots, ts, side="right") - 2, 0, len(pts) - 4)
+    index = segment[:, None] + np.arange(4)
+    tk, window = knots[index], pts[index]  # (k, 4) parameters and (k, 4, d) points of each t's segment
+    u = ts[:, None]
+
+    def lerp(level, a, b):
+        """Interpolate level[:, i] and level[:, i+1] linearly between the parameters tk[:, a] and tk[:, b]."""
+        left, right = tk[:, a : a + level.shape[1] - 1], tk[:, b : b + level.shape[1] - 1]
+        share = ((u - left) / (right - left))[:, :, None]
+        return (1 - share) * level[:, :-1] + share * level[:, 1:]
+
+    lines = lerp(window, 0, 1)  # the chords P_i P_i+1, i = j..j+2, at their own parameters
+    parabolas = lerp(lines, 0, 2)  # Pi_j and Pi_j+1 (Neville's second round)
+    curve = lerp(parabolas, 1, 2)[:, 0]  # their blend over [t_j+1, t_j+2]
+    return curve[0] if scalar else curve
+
+
+# ---------------------------------------------------------------- testing variation diminishing
+
+
+def sign_changes(values, tol: float = 1e-12) -> int:
+    """How often the sign changes along values (m,), entries with |x| <= tol skipped: S^-(values). Notes §5.
+
+    (1, 0, -1) has one change, (1, 0, 1) none: a zero is passed over, not counted as a sign.
+    """
+    heights = as_float_array(values, "values")
+    if heights.ndim != 1:
+        raise ValueError(f"values: expected a 1-D array of numbers, got shape {heights.shape}")
+    signs = np.sign(heights[np.abs(heights) > tol])
+    return int(np.count_nonzero(signs[1:] != signs[:-1]))
+
+
+def crossing_counts(values, points, line) -> tuple[int, int]:
+    """(p, c): how often a line crosses a control polygon (p) and its sampled curve (c). Notes §5, property 4.
+
+    values: (k, n+1), blending functions at k increasing parameters (row r holds f_0..f_n at the r-th
+    parameter); points: planar control points (n+1, 2); line: (a, b, h), the line a x + b y + h = 0 with
+    (a, b) != (0, 0). The heights a x + b y + h of the control points and of the k curve points
+    values @ points are counted with `sign_changes` (heights with |x| <= 1e-12 count as zero and are
+    skipped). Samples can miss crossings but never invent one, so c > p is a true counterexample to
+    variation diminishing.
+
+    >>> import numpy as np
+    >>> from cagd_ref.blending import crossing_counts, timmer_basis
+    >>> flat = [(0, 0), (1.5, 0), (3, 0), (4, 3)]                  # three points on the x-axis
+    >>> crossing_counts(timmer_basis(np.linspace(0, 1, 401)), flat, (0, 1, 0.05))   # the line y = -0.05
+    (0, 2)
+    """
+    table = as_float_array(values, "values")
+    if table.ndim != 2 or table.shape[1] == 0:
+        raise ValueError(f"values: expected blending-function values of shape (k, n+1), got shape {table.shape}")
+    pts = as_points(points)
+    if pts.shape != (table.shape[1], 2):
+        raise ValueError(f"points: expected {table.shape[1]} planar points, shape ({table.shape[1]}, 2), "
+                         f"one per column of values, got shape {pts.shape}")
+    a, b, h = as_vector(line, "line", dim=3)
+    if a == 0 and b == 0:
+        raise ValueError(f"line: (a, b) must not both be zero, got {(a, b, h)}")
+    normal = np.array([a, b])
+    return sign_changes(pts @ normal + h), sign_changes((table @ pts) @ normal + h)
 
 
 # ---------------------------------------------------------------- conversions to Bézier form

@@ -109,17 +109,19 @@ CROSSING_SAMPLES = np.linspace(0.0, 1.0, 801)
 class VariationDiminishingExplorer(Explorer):
     """A line across a control polygon: how often it meets the polygon, how often the curve. Notes §5, property 4."""
 
-    def __init__(self, points=None, form: str = "bezier"):
+    def __init__(self, points=None, form: str = "bezier", offset: float = 0.0):
         self.points = _cubic_polygon(points, ZIGZAG)
         self.centre = self.points.mean(axis=0)
         low, high = self.points.min(axis=0), self.points.max(axis=0)
         margin = 0.35 * max(high - low)
         self.box = (low - margin, high + margin)
         reach = float(np.linalg.norm(high - low)) / 2 + margin
+        if isinstance(offset, bool) or not isinstance(offset, (int, float)) or not abs(offset) <= round(reach, 1):
+            raise ValueError(f"offset: expected a number in [{-round(reach, 1)}, {round(reach, 1)}], got {offset!r}")
         controls = {
             "angle": _slider(widgets.FloatSlider, "angle (°)", min=0.0, max=180.0, step=1.0, value=0.0),
             "offset": _slider(widgets.FloatSlider, "offset", min=-round(reach, 1), max=round(reach, 1), step=0.02,
-                              value=0.0),
+                              value=float(offset)),
             "form": widgets.Dropdown(options=list(FORMS), value=form, description="form",
                                      layout=widgets.Layout(width="300px")),
         }
@@ -162,8 +164,9 @@ class VariationDiminishingExplorer(Explorer):
         ax.set_ylim(self.box[0][1], self.box[1][1])
         ax.set_aspect("equal", adjustable="box")
         verdict = "c ≤ p" if state["holds"] else "c > p: not variation diminishing"
+        # Two lines: the counts, then the verdict (one line would run past a narrow frame when c > p).
         ax.set_title(f"{FORM_NAMES[state['form']]} curve: c = {state['c']} crossings (dots), "
-                     f"polygon: p = {state['p']} (squares); {verdict}", fontsize=9)
+                     f"polygon: p = {state['p']} (squares)\n{verdict}", fontsize=9)
 
     def describe(self, state: dict) -> str:
         mark = "✓ c ≤ p" if state["holds"] else "<b style='color:#b00'>✗ c &gt; p</b>"
@@ -171,14 +174,16 @@ class VariationDiminishingExplorer(Explorer):
         return f"{name}: the line meets the polygon {state['p']} times and the curve {state['c']} times. {mark}"
 
 
-def variation_diminishing_explorer(points=None, form: str = "bezier") -> VariationDiminishingExplorer:
+def variation_diminishing_explorer(points=None, form: str = "bezier", offset: float = 0.0
+                                   ) -> VariationDiminishingExplorer:
     """Sliders `angle` (0..180°) and `offset` move a line; dropdown `form` picks the cubic form. Notes §5.
 
     points: four planar control points (4, 2). The line passes through the
-    centroid of the points when offset is 0. `update` returns {"line" (a, b, c),
+    centroid of the points when offset is 0; `offset` is where the slider
+    starts (the book's static frames turn the line at that offset). `update` returns {"line" (a, b, c),
     "curve" (801, 2), "polygon_crossings" (p, 2), "curve_crossings" (c, 2),
     "p", "c", "holds" (c <= p), "form"}.
     """
     if form not in FORMS:
         raise ValueError(f"form: expected one of {list(FORMS)}, got {form!r}")
-    return VariationDiminishingExplorer(points, form)
+    return VariationDiminishingExplorer(points, form, offset)

@@ -47,7 +47,8 @@ def test_every_public_name_is_tested():
         "timmer_to_bezier",
         "ball_to_bezier", "overhauser_to_bezier", "line_crossings", "convex_hull", "distance_outside_hull",
         "check_properties", "symbolic_basis", "symbolic_properties", "POWER_COEFFICIENTS", "basis_values",
-        "variation_diminishing", "exact_minimum",
+        "variation_diminishing", "exact_minimum", "catmull_rom_parameters", "catmull_rom_point", "sign_changes",
+        "crossing_counts",
     }
     assert set(bl.__all__) | set(bp.__all__) == tested
 
@@ -427,6 +428,111 @@ def test_symbolic_details_of_the_rational_example():
     assert all(v.holds for k, v in shifted.items() if k != "variation_diminishing")
 
 
+# --- Catmull-Rom curves with parameters (the course's extension of Notes §5.3) -------------------------
+
+ROW = np.array([[0.0, 0.0], [1.0, 2.0], [2.0, 0.0], [3.0, 2.0], [4.0, 0.0], [5.0, 2.0]])
+UNEVEN = np.array([[0.0, 0.0], [0.2, 1.0], [0.4, 1.1], [4.0, 1.0], [4.5, 0.0], [6.0, -2.0]])
+
+
+def neville(ts, points, t):
+    """The interpolating polynomial through points (m, d) at ts (m,), at the number t: the textbook recursion."""
+    level = [np.asarray(p, float) for p in points]
+    for r in range(1, len(ts)):
+        level = [((ts[i + r] - t) * level[i] + (t - ts[i]) * level[i + 1]) / (ts[i + r] - ts[i])
+                 for i in range(len(level) - 1)]
+    return level[0]
+
+
+def test_catmull_rom_parameters_uniform_centripetal_chord():
+    np.testing.assert_allclose(bl.catmull_rom_parameters(ROW, alpha=0), np.arange(6.0))
+    chords = np.linalg.norm(np.diff(UNEVEN, axis=0), axis=1)
+    np.testing.assert_allclose(bl.catmull_rom_parameters(UNEVEN, alpha=1), np.r_[0, np.cumsum(chords)])
+    np.testing.assert_allclose(bl.catmull_rom_parameters(UNEVEN), np.r_[0, np.cumsum(np.sqrt(chords))])
+    # Repeated points are fine for uniform parameters, which do not look at the points.
+    np.testing.assert_allclose(bl.catmull_rom_parameters([(0, 0), (0, 0), (1, 1)], alpha=0), [0, 1, 2])
+
+
+def test_catmull_rom_with_uniform_parameters_is_the_overhauser_curve():
+    ts = np.linspace(0, 3, 61)
+    np.testing.assert_allclose(bl.catmull_rom_point(ROW, np.arange(6.0) - 1, ts), bl.overhauser_point(ROW, ts),
+                               atol=1e-13)
+    # Any affine change of the parameters gives the same points at the corresponding t.
+    np.testing.assert_allclose(bl.catmull_rom_point(ROW, 2.5 * np.arange(6.0) + 7, 2.5 * (ts + 1) + 7),
+                               bl.overhauser_point(ROW, ts), atol=1e-12)
+
+
+@pytest.mark.parametrize("alpha", [0.0, 0.5, 1.0])
+def test_catmull_rom_blends_the_two_parabolas_of_each_segment(alpha):
+    knots = bl.catmull_rom_parameters(UNEVEN, alpha)
+    for j in range(len(UNEVEN) - 3):
+        t0, t1, t2, t3 = knots[j : j + 4]
+        for t in np.linspace(t1, t2, 7):
+            left = neville(knots[j : j + 3], UNEVEN[j : j + 3], t)
+            right = neville(knots[j + 1 : j + 4], UNEVEN[j + 1 : j + 4], t)
+            expected = ((t2 - t) * left + (t - t1) * right) / (t2 - t1)
+            np.testing.assert_allclose(bl.catmull_rom_point(UNEVEN, knots, t), expected, atol=1e-12)
+
+
+@pytest.mark.parametrize("alpha", [0.0, 0.5, 1.0])
+def test_catmull_rom_interpolates_and_is_c1_with_the_parabola_tangent(alpha):
+    knots = bl.catmull_rom_parameters(UNEVEN, alpha)
+    np.testing.assert_allclose(bl.catmull_rom_point(UNEVEN, knots, knots[1:-1]), UNEVEN[1:-1], atol=1e-12)
+
+    def tangent(i):  # the derivative at t_i of the parabola through points i-1, i, i+1
+        d0, d1 = knots[i] - knots[i - 1], knots[i + 1] - knots[i]
+        v0, v1 = (UNEVEN[i] - UNEVEN[i - 1]) / d0, (UNEVEN[i + 1] - UNEVEN[i]) / d1
+        return (d1 * v0 + d0 * v1) / (d0 + d1)
+
+    for j in range(len(UNEVEN) - 3):  # each segment is a cubic in t: fit it exactly, differentiate at both ends
+        t1, t2 = knots[j + 1], knots[j + 2]
+        samples = np.linspace(t1, t2, 4)
+        values = bl.catmull_rom_point(UNEVEN, knots, samples)
+        slopes = [[Polynomial.fit(samples, values[:, x], 3).deriv()(end) for x in (0, 1)] for end in (t1, t2)]
+        np.testing.assert_allclose(slopes, [tangent(j + 1), tangent(j + 2)], rtol=1e-8, atol=1e-8)
+
+
+def test_catmull_rom_shapes_and_the_last_parameter():
+    knots = np.array([0.0, 1.0, 3.0, 4.0, 4.5, 6.0])
+    assert bl.catmull_rom_point(ROW, knots, 2.0).shape == (2,)
+    assert bl.catmull_rom_point(ROW, knots, [2.0]).shape == (1, 2)
+    assert bl.catmull_rom_point(ROW, knots, np.array([])).shape == (0, 2)
+    np.testing.assert_allclose(bl.catmull_rom_point(ROW, knots, 4.5), ROW[4])  # the very end: last segment
+    space = np.column_stack([ROW, np.arange(6.0)])
+    np.testing.assert_allclose(bl.catmull_rom_point(space, knots, [1.0, 3.0])[:, 2], [1.0, 2.0])
+
+
+# --- counting crossings (Notes §5, property 4) -----------------------------------------------------
+
+
+def test_sign_changes_skip_zeros():
+    assert bl.sign_changes([1.0, 0.0, -1.0]) == 1
+    assert bl.sign_changes([1.0, 0.0, 0.0, 1.0]) == 0
+    assert bl.sign_changes([0.0, -1.0, 2.0, -3.0, 0.0]) == 2
+    assert bl.sign_changes([1e-13, -1.0]) == 0
+    assert bl.sign_changes([]) == 0
+
+
+def test_crossing_counts_of_the_notes_figure_and_of_timmers_flat_polygon():
+    example = notes_example("05.variation_diminishing")
+    polygon, line = example.args("polygon", "line")
+    p, c = bl.crossing_counts(bl.bezier_basis(np.linspace(0, 1, 401), degree=5), polygon, line)
+    assert (p, c) == (example.results["polygon_crossings"], example.results["curve_crossings"])
+    flat = [(0, 0), (1.5, 0), (3, 0), (4, 3)]
+    assert bl.crossing_counts(bl.timmer_basis(np.linspace(0, 1, 401)), flat, (0, 1, 0.05)) == (0, 2)
+    assert bl.crossing_counts(bl.bezier_basis(np.linspace(0, 1, 401)), flat, (0, 1, 0.05)) == (0, 0)
+
+
+@pytest.mark.parametrize("seed", range(5))
+def test_crossing_counts_agree_with_line_crossings(seed):
+    rng = np.random.default_rng(seed)
+    polygon = rng.uniform(-3, 3, (5, 2))
+    line = np.append(rng.normal(size=2), rng.normal())
+    values = bl.bezier_basis(np.linspace(0, 1, 301), degree=4)
+    p, c = bl.crossing_counts(values, polygon, line)
+    assert p == len(bp.line_crossings(polygon, line)) and c == len(bp.line_crossings(values @ polygon, line))
+    assert c <= p and (p - c) % 2 == 0  # the Bézier curve: c = p - 2j
+
+
 # --- bad input and untouched inputs ---------------------------------------------------------------
 
 
@@ -469,6 +575,22 @@ def test_symbolic_details_of_the_rational_example():
         (lambda: bp.exact_minimum(1 / sp.Symbol("t"), sp.Symbol("t")), ValueError, "expression"),
         (lambda: bp.exact_minimum(sp.Symbol("t"), "t"), TypeError, "t"),
         (lambda: bl.basis_values(bl.ball_basis, [[0.5]]), ValueError, "ts"),
+        (lambda: bl.catmull_rom_parameters(CUBIC, alpha=2.0), ValueError, "alpha"),
+        (lambda: bl.catmull_rom_parameters(CUBIC, alpha="half"), ValueError, "alpha"),
+        (lambda: bl.catmull_rom_parameters([(0, 0), (0, 0), (1, 1)], alpha=0.5), ValueError, "points"),
+        (lambda: bl.catmull_rom_point(CUBIC[:3], [0, 1, 2], 1.5), ValueError, "points"),
+        (lambda: bl.catmull_rom_point(CUBIC, [0, 1, 2], 1.5), ValueError, "params"),
+        (lambda: bl.catmull_rom_point(CUBIC, [0, 1, 1, 2], 1.0), ValueError, "params"),
+        (lambda: bl.catmull_rom_point(CUBIC, [0, 2, 1, 3], 1.5), ValueError, "params"),
+        (lambda: bl.catmull_rom_point(CUBIC, [0, 1, 2, 3], 2.5), ValueError, "t"),
+        (lambda: bl.catmull_rom_point(CUBIC, [0, 1, 2, 3], [[1.5]]), ValueError, "t"),
+        (lambda: bl.sign_changes([[1.0, -1.0]]), ValueError, "values"),
+        (lambda: bl.crossing_counts(bl.ball_basis(0.5), CUBIC, [0, 1, 0]), ValueError, "values"),
+        (lambda: bl.crossing_counts(bl.ball_basis(T), CUBIC[:3], [0, 1, 0]), ValueError, "points"),
+        (lambda: bl.crossing_counts(bl.ball_basis(T), np.zeros((4, 3)), [0, 1, 0]), ValueError, "points"),
+        (lambda: bl.crossing_counts(bl.ball_basis(T), CUBIC, [0, 0, 1]), ValueError, "line"),
+        (lambda: bl.crossing_counts(bl.ball_basis(T), CUBIC, [0, 1]), ValueError, "line"),
+        (lambda: bl.crossing_counts(bl.ball_basis(T), CUBIC, "y = 0"), TypeError, "line"),
     ],
 )
 def test_bad_input_is_rejected_with_the_arguments_name(call, error, name):

@@ -136,3 +136,14 @@ def test_points_given_to_the_factories_are_not_modified():
     widgets.blending_forms_explorer(points, draggable=False).update(x0=1.0)
     widgets.variation_diminishing_explorer(points).update(offset=1.0)
     np.testing.assert_array_equal(points, POLYGON)
+
+
+def test_the_line_can_start_at_an_offset():
+    explorer = widgets.variation_diminishing_explorer(FLAT, form="timmer", offset=-0.8)
+    state = explorer.state
+    np.testing.assert_allclose(state["line"], [0.0, 1.0, 0.05])  # y = -0.05 below the three collinear points
+    assert (state["p"], state["c"], state["holds"]) == (0, 2, False)
+    with pytest.raises(ValueError, match="offset"):
+        widgets.variation_diminishing_explorer(FLAT, offset=100.0)
+    with pytest.raises(ValueError, match="offset"):
+        widgets.variation_diminishing_explorer(FLAT, offset="low")

@@ -31,6 +31,17 @@ def test_bezout_always_counts_every_intersection(other, offset, radius, real, co
         assert x * x + y * y == pytest.approx(1)
 
 
+def test_the_same_circle_twice_has_infinitely_many_common_points_not_four_at_infinity():
+    explorer = widgets.bezout_explorer()
+    state = explorer.update(other="circle", offset=0.0, radius=1.0)
+    assert state["common_component"] and state["count"] == np.inf
+    assert state["finite"] == [] and state["at_infinity"] == [] and len(state["real"]) == 0
+    assert "infinitely many" in explorer.ax.get_title() and "same curve" in explorer.describe(state)
+    # Concentric but different circles still meet exactly four times, at the circular points.
+    state = explorer.update(radius=0.5)
+    assert not state["common_component"] and state["count"] == 4 and len(state["at_infinity"]) == 4
+
+
 def test_a_tangent_line_meets_the_circle_in_a_double_point():
     state = widgets.bezout_explorer().update(other="line", offset=1.0)
     np.testing.assert_allclose(state["real"], [[0.0, 1.0], [0.0, 1.0]], atol=1e-7)
