@@ -20,6 +20,10 @@ extensions = [
     "cagd_course.book.extension",
 ]
 
+# "Check your understanding" questions are sphinx-exercise's {exercise}: they read "Question 1, 2, ...",
+# so that they are not mistaken for the graded exercises of the exercise notebooks ("exercise 4.3").
+numfig_format = {"exercise": "Question %s"}
+
 # Set by the build from book.toml.
 project = "CAGD"
 author = ""
