@@ -23,6 +23,8 @@ extensions = [
 # "Check your understanding" questions are sphinx-exercise's {exercise}: they read "Question 1, 2, ...",
 # so that they are not mistaken for the graded exercises of the exercise notebooks ("exercise 4.3").
 numfig_format = {"exercise": "Question %s"}
+# Each answer follows its question, folded: its title is "Solution" (not "Solution to Exercise 1").
+exercise_style = "solution_follow_exercise"
 
 # Set by the build from book.toml.
 project = "CAGD"

@@ -63,7 +63,10 @@ def _course(root: Path, second_chapter_code: str = "x = 6 * 7\nx") -> Path:
             "See [the exercises](../exercises/01-first.ipynb)."
         ),
         new_code_cell("from cagd_course import widgets\n\nwidgets.de_casteljau_explorer()"),
-        new_markdown_cell("## 1.2 Printing\n\nSome text."),
+        new_markdown_cell(
+            "## 1.2 Printing\n\nSome text.\n\n```{exercise}\n:label: q-first\nWhy?\n```\n\n"
+            "```{solution} q-first\n:class: dropdown\nBecause.\n```"
+        ),
         new_code_cell("print('printed by chapter one')"),
     )
     _write(
@@ -127,6 +130,13 @@ def test_the_landing_page_and_the_sidebar_come_from_book_toml(book):
     sidebar = page.split('class="bd-links bd-docs-nav"', 1)[1].split("</nav>", 1)[0]
     for target in ("01-first.html", "../exercises/01-first.html", "#"):
         assert f'href="{target}"' in sidebar
+
+
+def test_understanding_questions_read_question_not_exercise(book):
+    _, out, _ = book
+    page = _text(_html(out, "chapters/01-first.html"))
+    # Not "Exercise 1", which a student would take for a graded exercise; the answer is just "Solution".
+    assert re.search(r"Question \d", page) and not re.search(r"Exercise \d", page)
 
 
 def test_the_notation_table_is_the_front_matter_of_every_book(book):
@@ -287,7 +297,7 @@ def test_roles_remove_setup_fold_checks_figures_and_reference_code_and_agg_draws
     assert "SCAFFOLDING" not in page
     # The mathematical environments: an algorithm box, a question and its folded answer.
     assert re.search(r'class="[^"]*\bproof\b[^"]*\balgorithm\b', page) and "Algorithm 1" in _text(page)
-    assert "Exercise 1" in _text(page) and re.search(r'class="[^"]*solution[^"]*dropdown', page)
+    assert re.search(r"Question \d", _text(page)) and re.search(r'class="[^"]*solution[^"]*dropdown', page)
     assert "{prf:algorithm}" not in page and "{solution}" not in page
     assert "\N{CHECK MARK} the answer is 42" in page
     assert "Show the check" in page and "Show the code of this figure" in page
