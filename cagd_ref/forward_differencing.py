@@ -83,8 +83,8 @@ def power_differences(coeffs, t0: float = 0.0, delta: float = 1.0) -> np.ndarray
     """Starting differences f(t0), Δ¹(t0), ..., Δⁿ(t0) of a power-form polynomial for step δ. Notes §4.
 
     coeffs: ascending power coefficients (n+1,) or (n+1, d). The polynomial is
-    first rewritten in the step count u, q(u) = f(t0 + δ u) = Σ q_k uᵏ with
-    q_k = b_k δᵏ (b_k its coefficients about t0); then Δʲ(t0) = j! Σ_k S(k, j) q_k.
+    first rewritten in the step count s, q(s) = f(t0 + δ s) = Σ q_k sᵏ with
+    q_k = c_k δᵏ (c_k its coefficients about t0); then Δʲ(t0) = j! Σ_k S(k, j) q_k.
     For t0 = 0 and n = 3 this is the notes' Δ¹ = a₁δ + a₂δ² + a₃δ³,
     Δ² = 2a₂δ² + 6a₃δ³, Δ³ = 6a₃δ³. No differences of nearby values are taken,
     so the small high-order differences keep their full relative precision.

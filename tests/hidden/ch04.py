@@ -285,7 +285,7 @@ EXERCISES = [
         reference=forward_differencing.forward_difference_eval,
         cases=eval_cases,
         compare=close(1e-6, 1e-6),
-        hint="Start from f(t0), Δ¹(t0), ..., Δⁿ(t0) in closed form: re-expand f about t0, q_k = b_k δᵏ, then "
+        hint="Start from f(t0), Δ¹(t0), ..., Δⁿ(t0) in closed form: re-expand f about t0, q_k = c_k δᵏ, then "
         "Δʲ = j! Σ_k S(k, j) q_k (a table of differences of values loses digits). Each step records f, then "
         "updates f += Δ¹, Δ¹ += Δ², ... using the old value below each one. "
         "Return exactly `count` values; an (n+1,) input gives (count,), an (n+1, d) input gives (count, d).",

@@ -139,3 +139,22 @@ def test_drift_explorer_rejects_unknown_precisions():
     with pytest.raises(TypeError, match="precision"):
         explorer.update(precision="float16")
     assert explorer.values["precision"] == "float32"
+
+
+SETTINGS = [(10, "float32"), (2000, "float32"), (20000, "float32"), (2000, "float64")]
+
+
+@pytest.mark.parametrize("steps, precision", SETTINGS)
+def test_drift_explorer_legend_leaves_the_half_pixel_line_and_the_curves_free(steps, precision):
+    explorer = widgets.drift_explorer()
+    explorer.update(steps=steps, precision=precision)
+    explorer.figure.canvas.draw()
+    box = explorer.ax.get_legend().get_window_extent()
+    for line in explorer.ax.get_lines():
+        if line.get_label() == "half a pixel":  # an axhline across the whole width, at 0.5 px
+            height = explorer.ax.transData.transform([(1.0, 0.5)])[0, 1]
+            assert not box.y0 <= height <= box.y1
+            continue
+        x, y = line.get_transform().transform(np.column_stack(line.get_data())).T
+        inside = (box.x0 <= x) & (x <= box.x1) & (box.y0 <= y) & (y <= box.y1)
+        assert not inside.any(), line.get_label()
