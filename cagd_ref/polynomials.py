@@ -52,6 +52,19 @@ def _binomials(n: int, name: str = "coeffs") -> np.ndarray:
     return np.array([comb(n, i) for i in range(n + 1)], dtype=float)
 
 
+def _scaled_by_binomials(b: np.ndarray, binomials: np.ndarray) -> np.ndarray:
+    """β_i = C(n, i) b_i, shape of b; ValueError when one of them overflows a float (|b_i| C(n, i) > 1.8e308)."""
+    with np.errstate(over="ignore"):
+        beta = b * _column(binomials, b)
+    if not np.all(np.isfinite(beta)):
+        n = len(b) - 1
+        raise ValueError(
+            f"coeffs: C(n, i) b_i overflows a float at degree {n} (largest |b_i| {np.abs(b).max():.3g}); "
+            "every |b_i| C(n, i) must stay below 1.8e308"
+        )
+    return beta
+
+
 def _column(values: np.ndarray, like: np.ndarray) -> np.ndarray:
     """A 1-D array (m,) shaped to broadcast against rows of coefficients `like` (·,) or (·, d): (m,) or (m, 1).
 
@@ -166,7 +179,9 @@ def bernstein_horner_plain(coeffs: ArrayLike, t: ArrayLike) -> float | np.ndarra
     power τⁱ and one factor 1 - τ per step, O(n) per point. coeffs: Bernstein
     coefficients (n+1,) or (n+1, d); t (the τ above) and the shapes as in
     `horner`. `bernstein_horner` computes the same values, tuned for very many
-    parameters, and also over any interval.
+    parameters, and also over any interval. Every β_i must fit in a float:
+    ValueError for a degree above 1029 (C(n, n/2) alone overflows) and for
+    any |b_i| C(n, i) above 1.8e308 (at degree 1029 already for |b_i| >= 1.26).
 
     >>> from cagd_ref.polynomials import bernstein_horner_plain
     >>> bernstein_horner_plain([1, 9, 4, 6], 0.5)      # X of the notes' rational cubic (§3.3) at t = 1/2
@@ -180,7 +195,10 @@ def bernstein_horner_plain(coeffs: ArrayLike, t: ArrayLike) -> float | np.ndarra
     if n > MAX_BINOMIAL_DEGREE:
         raise ValueError(f"coeffs: degree {n} is too high; C(n, i) overflows a float beyond degree 1029")
     binomials = np.array([comb(n, i) for i in range(n + 1)], dtype=float)
-    beta = b.reshape(n + 1, -1) * binomials[:, None]  # β_i = C(n, i) b_i, once per polynomial
+    with np.errstate(over="ignore"):
+        beta = b.reshape(n + 1, -1) * binomials[:, None]  # β_i = C(n, i) b_i, once per polynomial
+    if not np.all(np.isfinite(beta)):
+        raise ValueError(f"coeffs: C(n, i) b_i overflows a float at degree {n}; |b_i| C(n, i) must stay below 1.8e308")
     tt = ts[:, None]  # (k, 1): one row per parameter
     one_minus_t = 1 - tt
     value, power = np.ones_like(tt) * beta[0], np.ones_like(tt)  # v_0 = β_0, τ⁰
@@ -204,6 +222,8 @@ def bernstein_horner(coeffs: ArrayLike, t: ArrayLike, interval: ArrayLike = (0, 
     It computes what `bernstein_horner_plain` (the teaching form) computes, in
     place, coordinate-major and a block of parameters at a time.
     This is also how `cagd_ref.bezier.evaluate` computes curve points.
+    Every c_i must fit in a float: ValueError for a degree above 1029 and for
+    any |b_i| C(n, i) above 1.8e308, instead of infinities in the result.
     The notes' rational cubic (§3.3), homogeneous (X, Y, W) Bernstein coefficients:
 
     >>> from cagd_ref.polynomials import bernstein_horner
@@ -218,7 +238,7 @@ def bernstein_horner(coeffs: ArrayLike, t: ArrayLike, interval: ArrayLike = (0, 
     ts, scalar = as_parameter(t)
     t0, t1 = as_interval(interval)
     n = len(b) - 1
-    c = (b * _column(_binomials(n), b)).reshape(n + 1, -1)  # (n+1, d): one column per polynomial
+    c = _scaled_by_binomials(b, _binomials(n)).reshape(n + 1, -1)  # (n+1, d): one column per polynomial
     u = ts if (t0, t1) == (0.0, 1.0) else (ts - t0) / (t1 - t0)
     # Coordinate-major results, filled a block of parameters at a time: each pass runs over
     # contiguous numbers, and a block's arrays stay in the processor's cache for all n steps.
@@ -328,11 +348,12 @@ def power_to_bernstein(coeffs: ArrayLike, interval: ArrayLike = (0, 1)) -> np.nd
 
 
 def power_to_bernstein_interval(coeffs: ArrayLike, interval: ArrayLike) -> np.ndarray:
-    """Ascending power coefficients in t -> Bernstein coefficients over [t0, t1], same shape. Notes §3.3, §2.2.
+    """Ascending power coefficients in t -> Bernstein coefficients over [t0, t1], same shape. Notes §2.2, §2.13.
 
     Two steps: rewrite p in the local parameter s of the interval,
     g(s) = p(t0 + (t1 - t0) s), by Horner's rule on polynomials
-    (`substitute_affine`); then convert g on [0, 1] with the difference table.
+    (`substitute_affine`); then convert g on [0, 1] with the difference table
+    (notes §3.3).
     `power_to_bernstein(coeffs, interval)` gives the same. coeffs: (n+1,) or
     (n+1, d); interval: (t0, t1) with t0 < t1. t² over [1, 3] has the
     coefficients 1, 1·3, 9 (its blossom at (1, 1), (1, 3), (3, 3)):

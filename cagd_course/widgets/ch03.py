@@ -133,6 +133,10 @@ def draw_difference_table(ax: Axes, coeffs: ArrayLike, power: bool = True, fonts
 
 
 FRESH_STYLE = {"boxstyle": "round,pad=0.3", "facecolor": "#fde3c8", "edgecolor": "C1", "linewidth": 1.5}
+# The given left column in neutral grey, so that orange means "new in this step" only; its first entry is
+# also the top row's b_0 (blue, framed grey).
+GIVEN_STYLE = {"boxstyle": "round,pad=0.3", "facecolor": "#e6e6e6", "edgecolor": "0.35"}
+GIVEN_CORNER_STYLE = {"boxstyle": "round,pad=0.3", "facecolor": "#d6e6f5", "edgecolor": "0.35", "linewidth": 2}
 EMPTY_STYLE = {"boxstyle": "round,pad=0.3", "facecolor": "white", "edgecolor": "0.85"}
 
 
@@ -140,8 +144,9 @@ def draw_backward_fill(ax: Axes, left_column: ArrayLike, step: int, fontsize: fl
     """The difference table filled from its left column, after `step` columns. Notes §3.3.
 
     left_column: (n+1,) the entries Δʲ b_0 = a_j / C(n, j). Entry Δʲ b_i sits at
-    (i, -j). Columns 0..step are filled; the newest one (column `step`) is
-    framed orange, with arrows from the two entries that sum to each of its
+    (i, -j). Columns 0..step are filled: the given column 0 in grey (its top
+    entry, b_0, blue framed grey), the top row blue, and the newest column
+    (`step`) orange, with arrows from the two entries that sum to each of its
     entries, Δʲ b_k = Δʲ b_(k-1) + Δʲ⁺¹ b_(k-1); later slots are empty boxes.
     Returns `ax`, with its axes switched off.
     """
@@ -162,7 +167,7 @@ def draw_backward_fill(ax: Axes, left_column: ArrayLike, step: int, fontsize: fl
                 continue
             style = FRESH_STYLE if i == step and step > 0 else (TOP_ROW_STYLE if j == 0 else INNER_STYLE)
             if i == 0:
-                style = LEFT_COLUMN_STYLE if j else CORNER_STYLE
+                style = GIVEN_STYLE if j else GIVEN_CORNER_STYLE
             ax.text(i, -j, f"{columns[i][j]:g}", ha="center", va="center", fontsize=fontsize, bbox=style)
             if i == step and step > 0:
                 for source in (j, j + 1):

@@ -142,6 +142,8 @@ def bernstein_horner_cases(rng):
     cases += _bad_coefficient_cases(0.5)
     cases.append(Case(BAD, (NOTES_X_BERNSTEIN, [[0.1, 0.2]])))
     cases.append(Case(BAD, (np.ones(1031), 0.5)))  # degree 1030: the binomial coefficients overflow
+    cases.append(Case(BAD, (2.0 * np.ones(1030), 0.5)))  # degree 1029: 2 C(1029, 514) overflows
+    cases.append(Case(BAD, ([1.0, 1e308, 1.0], 0.5)))  # degree 2: C(2, 1) 1e308 overflows
     return cases
 
 
@@ -302,9 +304,11 @@ EXERCISES = [
                 "array (or list) of k numbers gives shape `(k,)` (or `(k, d)`), even when k = 1.",
             COLUMNS: "shape `(n+1,)` or `(n+1, d)`, $n\\ge0$. A degree-0 polynomial is the constant $b_0$.",
             BAD: "Raise a `ValueError` for an empty or three-dimensional `coeffs`, NaN or infinite coefficients, a "
-                "two-dimensional `t`, and a degree $n$ above 1029 (more than 1030 coefficients): beyond it the "
-                "binomial coefficients $\\binom ni$ overflow a float (section 3.2 of the chapter), so refuse "
-                "such input instead of returning infinities or NaN.",
+                "two-dimensional `t`, a degree $n$ above 1029 (more than 1030 coefficients), and any coefficient "
+                "whose $\\beta_i = \\binom ni b_i$ overflows a float, that is $|b_i|\\binom ni$ larger than the "
+                "largest double (about $1.8\\cdot 10^{308}$). Beyond degree 1029 the binomial coefficients overflow "
+                "on their own; at degree 1029 a coefficient of 2 is already too large (section 3.2 of the "
+                "chapter). Refuse such input instead of returning infinities or NaN.",
         },
     ),
     Exercise(

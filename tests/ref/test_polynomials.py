@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import warnings
 from fractions import Fraction
 from math import comb
 
@@ -334,6 +335,23 @@ def test_bernstein_horner_handles_the_highest_degree_with_finite_binomials():
     assert np.allclose(p.bernstein_horner(np.ones(n + 1), t), 1.0)          # partition of unity
     ramp = np.arange(n + 1) / n                                              # the coefficients of t itself
     np.testing.assert_allclose(p.bernstein_horner(ramp, t), t, atol=1e-12)
+
+
+@pytest.mark.parametrize("evaluate", [p.bernstein_horner, p.bernstein_horner_plain])
+def test_bernstein_horner_refuses_scaled_coefficients_that_overflow(evaluate):
+    """Every β_i = C(n, i) b_i must fit in a float, not only the binomials: |b_i| C(n, i) < 1.8e308."""
+    n = p.MAX_BINOMIAL_DEGREE                                                # C(1029, 514) ≈ 1.43e308
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")                                       # and no overflow warning either
+        for coeffs in (2.0 * np.ones(n + 1), [1.0, 1e308, 1.0], 1000.0 * np.ones(1021), -10.0 * np.ones(1028)):
+            with pytest.raises(ValueError, match="^coeffs: C\\(n, i\\) b_i overflows"):
+                evaluate(coeffs, 0.5)
+        with pytest.raises(ValueError, match="^coeffs:"):
+            evaluate(np.column_stack([np.ones(n + 1), 2.0 * np.ones(n + 1)]), [0.25, 0.5])  # one bad column
+        assert np.isclose(evaluate(1.25 * np.ones(n + 1), 0.5), 1.25)    # 1.25 C(1029, 514) still fits
+        assert np.isclose(evaluate(1000.0 * np.ones(1020), 0.5), 1000.0)  # degree 1019: fits
+        assert np.isclose(evaluate(10.0 * np.ones(1027), 0.5), 10.0)      # degree 1026: fits
+        assert np.isclose(evaluate([1.0, 8e307, 1.0], 0.5), 4e307)       # C(2, 1) · 8e307 < 1.8e308
 
 
 # --- basis conversion (Notes (3.1) and the difference table) ------------------------------------

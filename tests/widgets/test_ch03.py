@@ -9,6 +9,7 @@ from fractions import Fraction
 import numpy as np
 import numpy.polynomial.polynomial as npp
 import pytest
+from matplotlib.colors import to_hex
 from matplotlib.figure import Figure
 
 from cagd_course import widgets
@@ -151,6 +152,16 @@ def test_draw_backward_fill_fills_one_column_per_step():
         arrows = [a for a in ax.texts if getattr(a, "arrow_patch", None) is not None]
         assert len(arrows) == (0 if step == 0 else 2 * (4 - step))
         assert not ax.axison
+        # Orange marks the newest column only: the given left column is neutral (its top entry blue).
+        faces = {
+            t.get_position(): to_hex(t.get_bbox_patch().get_facecolor())
+            for t in ax.texts if t.get_bbox_patch() is not None and t.get_text() != " · "
+        }
+        assert faces[(0, 0)] == ch03.GIVEN_CORNER_STYLE["facecolor"]
+        assert all(faces[(0, -j)] == ch03.GIVEN_STYLE["facecolor"] for j in (1, 2, 3))
+        fresh = {face for (x, _), face in faces.items() if x == step and step > 0}
+        assert fresh <= {ch03.FRESH_STYLE["facecolor"]}
+        assert ch03.FRESH_STYLE["facecolor"] not in {faces[(0, -j)] for j in range(4)}
     with pytest.raises(ValueError, match="step"):
         widgets.draw_backward_fill(Figure().add_subplot(), left, 4)
     with pytest.raises(ValueError, match="left_column"):
