@@ -134,6 +134,17 @@ def test_drift_explorer_float32_drifts_more_with_more_steps():
     assert "float64" in explorer.ax.get_title()
 
 
+def test_drift_explorer_float64_names_no_horner_curve_it_cannot_draw():
+    explorer = widgets.drift_explorer()
+    explorer.update(steps=2000, precision="float64")
+    labels = [text.get_text() for text in explorer.ax.get_legend().get_texts()]
+    assert not any(label.startswith("Horner") for label in labels)
+    assert "reference itself" in explorer.describe(explorer.state)
+    explorer.update(precision="float32")
+    labels = [text.get_text() for text in explorer.ax.get_legend().get_texts()]
+    assert "Horner (float32)" in labels
+
+
 def test_drift_explorer_rejects_unknown_precisions():
     explorer = widgets.drift_explorer()
     with pytest.raises(TypeError, match="precision"):
