@@ -1,5 +1,5 @@
 """The `cagd` command: list the course, self-check a notebook, validate suites, grade a class, export its
-grades, release the course to a class, build the book."""
+grades, release the course to a class, write a Gradescope autograder, build the book."""
 
 from __future__ import annotations
 
@@ -131,18 +131,39 @@ def _cmd_release(args) -> int:
     from .grading.release import release
 
     try:
-        made = release(args.out, args.chapter, book=args.book, force=args.force)
+        made = release(args.out, args.chapter, book=args.book, force=args.force, live=args.live,
+                       execute=not args.no_outputs, timeout=args.timeout)
     except (FileExistsError, RuntimeError) as err:
         print(f"cagd release: {err}", file=sys.stderr)
         return 2
     print(f"release written to {made.out}: {len(made.exercises)} exercise notebook(s) with a self-check of "
           f"{len(made.checked)} exercise(s), {len(made.chapters)} chapter notebook(s) "
-          f"({made.dropped_cells} reference-source cell(s) dropped)"
+          f"({made.dropped_cells} reference-source cell(s) dropped; {len(made.executed)} with their outputs)"
           + (f", the book in {made.book}" if made.book else ""))
-    print("checked: no reference implementation of a graded function and no hidden case in it")
+    if made.live:
+        print("live: chapters/cagd_ref and chapters/cagd_course let every chapter run; they hold the reference "
+              "implementation, so this release does not keep the no-reference promise (its README says so)")
+        print("checked: no hidden case in it")
+    else:
+        print("checked: no reference implementation of a graded function and no hidden case in it")
     for problem in made.problems:
         print(f"cagd release: {problem}", file=sys.stderr)
     return 1 if made.problems else 0
+
+
+def _cmd_autograder(args) -> int:
+    from .grading.autograder import build_autograder
+
+    try:
+        made = build_autograder(args.chapter, args.out, _limits(args), args.seed, args.user, args.allow_unconfined)
+    except RuntimeError as err:
+        print(f"cagd autograder: {err}", file=sys.stderr)
+        return 2
+    print(f"Gradescope autograder of chapter {made.chapter} written to {made.path}: "
+          f"{len(made.exercises)} exercise(s), {sum(made.exercises.values()):g} point(s); the course's wheel "
+          f"{made.wheel}; runtime: {', '.join(r.split(';')[0] for r in made.requirements)}")
+    print("upload it as the autograder of a programming assignment (see the README, section Gradescope)")
+    return 0
 
 
 def _cmd_stamp(args) -> int:
@@ -307,13 +328,50 @@ def build_parser() -> argparse.ArgumentParser:
         description="OUT/exercises: the exercise notebooks and beside them a small cagd_course package whose "
         "check() runs the visible cases (answers bundled as data) and names the hidden groups; no reference "
         "implementation of a graded function and no hidden case is in OUT (checked before it is written). "
-        "OUT/chapters: the chapter notebooks without their reference-source cells; with --book also OUT/book.",
+        "OUT/chapters: the chapter notebooks without their reference-source cells, each with its executed outputs "
+        "(figures, tables, the static frames of its explorers) from the book's execution cache: chapters "
+        "`cagd book` executed are not run again, the others are (minutes for all 21). With --live also the "
+        "runtime the chapters need (the reference among it), with --book also OUT/book. OUT/README.md says "
+        "which mode it is.",
     )
     p.add_argument("out", type=Path, metavar="OUT", help="a new (or empty) folder outside the course")
     p.add_argument("--chapter", type=int, action="append", metavar="N", help="only chapter N (repeatable)")
-    p.add_argument("--book", action="store_true", help="also build the HTML book of the released chapters (minutes)")
+    p.add_argument("--book", action="store_true", help="also build the HTML book of the released chapters")
+    p.add_argument(
+        "--live",
+        action="store_true",
+        help="also ship what the chapters run (cagd_ref, the reference implementation, and the course's explorers) "
+        "so every chapter and explorer runs in the students' Jupyter; the release then holds the reference "
+        "solutions of the exercises (the class report flags submissions that are the reference's code)",
+    )
+    p.add_argument("--no-outputs", action="store_true",
+                   help="write the chapter notebooks without executing them (seconds; they show no figures)")
+    p.add_argument("--timeout", type=int, default=300, help="seconds allowed per notebook cell (default 300)")
     p.add_argument("--force", action="store_true", help="replace OUT if it is not empty")
     p.set_defaults(run=_cmd_release)
+
+    p = sub.add_parser(
+        "autograder",
+        help="write one chapter's Gradescope autograder (a zip to upload)",
+        description="Write OUT.zip, the autograder of a Gradescope programming assignment for one chapter's "
+        "exercise notebook: setup.sh and run_autograder at its root (Gradescope's autograder specification), the "
+        "course's own wheel, the runtime it needs and the chapter's hidden suite. Each submission is graded as "
+        "`cagd grade` grades a notebook: in the grader's confined worker, as an unprivileged user that setup.sh "
+        "creates, which can read neither the hidden suite nor the reference nor write results.json. results.json: "
+        "one test per exercise with its score, one per hidden group of cases shown after grades are published.",
+    )
+    p.add_argument("out", type=Path, metavar="OUT.zip", help="the zip to write")
+    p.add_argument("--chapter", type=int, required=True, metavar="N", help="the chapter whose exercises it grades")
+    p.add_argument("--user", default="cagd-student",
+                   help="the unprivileged user graded code runs as in the container (default cagd-student)")
+    p.add_argument(
+        "--allow-unconfined",
+        action="store_true",
+        help="grade even where the container cannot confine graded code (it could then read the hidden suite); "
+        "without it such submissions score 0 and the log says why",
+    )
+    _add_limits(p)
+    p.set_defaults(run=_cmd_autograder)
 
     p = sub.add_parser("stamp", help="write metadata.cagd.chapter into every exercise notebook of book.toml")
     p.add_argument("--check", action="store_true", help="change nothing; fail if a notebook lacks it")

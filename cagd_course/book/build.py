@@ -446,3 +446,58 @@ def build_book(
             html = chapter.exercises.relative_to(course.root).with_suffix(".html").as_posix()
             pages.append(BuiltPage(chapter.number, f"Exercises: {chapter.title}", html, kind="exercises"))
     return pages
+
+
+def execute_notebooks(
+    notebooks: dict[int, Path],
+    work: Path | str | None = None,
+    timeout: int = 300,
+    progress: bool = True,
+    frames: int = DEFAULT_FRAMES,
+    outputs: dict[int, nbformat.NotebookNode] | None = None,
+) -> dict[int, tuple[nbformat.NotebookNode | None, str]]:
+    """Chapter notebooks executed as `build_book` executes them, through its execution cache (for `cagd release`).
+
+    notebooks: chapter number -> a chapter notebook of book.toml, or a copy of one (a class release's). Each is
+    staged in its book form under `work/executed/chapters` (the book's own sources are left alone) and executed,
+    one per core, unless the cache `work/jupyter_cache` holds its execution; the default `work` is the book's
+    (`_build/.book`), so what `cagd book` executed is not executed again. outputs: for some chapters, an executed
+    notebook with the same code cells whose outputs are recorded in the cache as that notebook's execution
+    instead of running it, so a later `build_book` with this `work` finds them. Returns, per chapter, the
+    executed code cells (the cache's notebook, book form) and "", or None and which cell failed.
+    """
+    from jupyter_cache.base import CacheBundleIn
+
+    course = load_course()
+    work = Path(work) if work is not None else course.root / WORK
+    graded = {c.number: {e.split(".", 1)[1]: e for e in c.exercise_points} for c in course.chapters}
+    staged = {}
+    for number, path in notebooks.items():
+        copy = work / "executed" / "chapters" / Path(path).name
+        copy.parent.mkdir(parents=True, exist_ok=True)
+        form = _book_form(nbformat.read(path, as_version=4), graded.get(number, {}))
+        _write_if_changed(copy, nbformat.writes(form))
+        staged[number] = copy
+    environment = {COURSE_ENV: str(course.root), STATIC_FRAMES_ENV: str(frames), "MPLBACKEND": INLINE_BACKEND}
+    with _environment(**environment):
+        cache = _open_cache(work / "jupyter_cache", _fingerprint())
+        for number, executed in (outputs or {}).items():
+            notebook = nbformat.read(staged[number], as_version=4)
+            code = [c for c in notebook.cells if c.cell_type == "code"]
+            done = [c for c in executed.cells if c.cell_type == "code"]
+            if len(code) != len(done) or any(a.source != b.source for a, b in zip(code, done)):
+                raise ValueError(f"outputs of chapter {number}: its code cells are not those of {staged[number]}")
+            for cell, ran in zip(code, done):
+                cell.outputs, cell.execution_count = ran.get("outputs", []), ran.get("execution_count")
+            bundle = CacheBundleIn(notebook, str(staged[number]), data={"execution_seconds": 0.0})
+            cache.cache_notebook_bundle(bundle, check_validity=False, overwrite=True)
+        _forget_figureless(cache, staged)
+        runs = _execute_all(cache, staged, timeout, progress)
+    found: dict[int, tuple[nbformat.NotebookNode | None, str]] = {}
+    for number, path in staged.items():
+        if runs[number].error:
+            found[number] = (None, f"chapter {number} ({Path(notebooks[number]).name}): {runs[number].error}")
+            continue
+        record = cache.match_cache_notebook(nbformat.read(path, as_version=4))
+        found[number] = (cache.get_cache_bundle(record.pk).nb, "")
+    return found

@@ -20,6 +20,8 @@ from .similarity import fingerprint, flag_pairs, source_fingerprint
 __all__ = ["write_report", "report_html", "REPORT"]
 
 REPORT = "report.html"
+# Rows of the similarity table shown; a class copying one solution wholesale would otherwise fill the page.
+SHOWN_FLAGS = 1000
 EXERCISE_BINS = ("0", "< 25 %", "< 50 %", "< 75 %", "< 100 %", "100 %")
 esc = html.escape
 
@@ -196,11 +198,15 @@ def report_html(records: dict, unassigned: list[dict], course, flags: list[dict]
     names = {s: r["student"] for (s, _), r in records.items()}
     out.append("<h2 id='similar'>Graded functions with the same code</h2>"
                "<p>Identical after renaming every variable and ignoring formatting, comments and docstrings "
-               "(short functions and untouched stubs are left out). A flag for a person to look at, "
+               "(short functions and untouched stubs are left out); each group of equal functions is listed as its "
+               "first member beside each of the others. A flag for a person to look at, "
                "not a verdict: honest students do sometimes write the same code.</p>")
     out.append(_table(["chapter", "submission", "same code as", "exercises"],
                       [[f["chapter"], names.get(f["first"], f["first"]), names.get(f["second"], f["second"]),
-                        ", ".join(f["exercises"])] for f in flags], "similar"))
+                        ", ".join(f["exercises"])] for f in flags[:SHOWN_FLAGS]], "similar"))
+    if len(flags) > SHOWN_FLAGS:
+        out.append(f"<p class='more'>... and {len(flags) - SHOWN_FLAGS} more; every record's fingerprints are in "
+                   "its <code>record.json</code>.</p>")
     style = (
         "body{font-family:system-ui,sans-serif;max-width:72rem;margin:2rem auto;padding:0 1rem;line-height:1.4}"
         "table{border-collapse:collapse;margin:.5rem 0 1.5rem}td,th{border:1px solid #ccc;padding:.25rem .5rem;"

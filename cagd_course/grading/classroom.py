@@ -3,10 +3,11 @@
 Submissions come in nbgrader's folder-per-student layout or as an LMS bulk download (see
 `layouts`); each notebook is graded on the exercises of its chapter only, and its record,
 feedback page and Gradescope JSON go to ``GRADES/<submission>/chNN/``; the student's pages for
-the whole semester to ``GRADES/<submission>/feedback.html`` and ``results.json``. The gradebook
-(`gradebook`) is rebuilt from the records after every submission, so an interrupted run loses
-nothing and resumes where it stopped: a notebook already graded, unchanged, is skipped unless
-``force``. With ``jobs`` > 1 the submissions are graded by that many grading processes, each with
+the whole semester to ``GRADES/<submission>/feedback.html`` and ``results.json``. Each record is
+written as soon as its notebook is graded; the gradebook (`gradebook`) is rebuilt from the records
+during the run at a cost proportional to the class (`_Gradebook`) and at its end, so an
+interrupted run loses nothing and resumes where it stopped: a notebook already graded, unchanged,
+is skipped unless ``force``. With ``jobs`` > 1 the submissions are graded by that many grading processes, each with
 its own zygote: the grader's side (drawing cases, computing the reference's answers, comparing)
 costs as much CPU as running the submission, and one process holds one core. Grading refuses to
 start where graded code cannot be confined, unless the instructor allows it and is told exactly
@@ -369,6 +370,52 @@ def _graded(todo: list[dict], suites: _Exercises, seed: int, limits: Limits, out
             process.close()
 
 
+# What a run keeps of each record in memory (the gradebook, the students' pages and the summary need no more;
+# the class report reads the records from disk): a class of 10,000 then holds a few objects per exercise each.
+_KEPT = ("submission", "student", "lms_id", "late", "chapter", "seed", "score", "max_score", "status", "sandbox",
+         "confined", "sha256")
+
+
+def _slim(record: dict) -> dict:
+    slim = {key: record.get(key) for key in _KEPT if key in record}
+    slim["exercises"] = {eid: {"score": r.get("score", 0.0), "points": r.get("points", 0.0),
+                               "seconds": r.get("seconds", 0.0)} for eid, r in record.get("exercises", {}).items()}
+    return slim
+
+
+class _Gradebook:
+    """Writes GRADES/gradebook.csv from the records during a run, at a cost proportional to the class.
+
+    A rebuild reads every record, so rebuilding after each submission would cost the square of the
+    class. The gradebook is rewritten when the grading done since the last rewrite has taken at
+    least `SHARE` times as long as that rewrite did (and at least `EVERY` seconds), so rewriting
+    adds at most about 1/SHARE to the run's time, and always at the end. The records are the
+    truth: an interrupted run leaves a gradebook that may lag behind them, which the next run
+    rebuilds.
+    """
+
+    SHARE = 20.0
+    EVERY = 2.0
+
+    def __init__(self, path: Path, records: dict, course):
+        self.path, self.records, self.course = path, records, course
+        self.cost = 0.0
+        self.since = time.monotonic()
+        self.pending = False
+
+    def changed(self) -> None:
+        self.pending = True
+        if time.monotonic() - self.since >= max(self.SHARE * self.cost, self.EVERY):
+            self.write()
+
+    def write(self) -> None:
+        started = time.monotonic()
+        atomic_write(self.path, gradebook_text(self.records, self.course))
+        self.since = time.monotonic()
+        self.cost = self.since - started
+        self.pending = False
+
+
 def _check_chapters(course, chapters: list[int] | None) -> None:
     if not chapters:
         return
@@ -448,7 +495,7 @@ def grade_class(
         if not probe.confined and not allow_unconfined:
             raise UnconfinedError(_unconfined_text(probe, allowed=False))
         with exclusive(out):
-            records = load_records(out)
+            records = {key: _slim(record) for key, record in load_records(out).items()}
             todo = [
                 t for t in tasks
                 if force or records.get((t["submission"], t["chapter"]), {}).get("sha256") != t["sha256"]
@@ -456,18 +503,25 @@ def grade_class(
             ]
             new: list[dict] = []
             atomic_write(out / UNASSIGNED, unassigned_text(unassigned))
+            # Each student's chapters, so that writing a student's pages costs their chapters, not the class.
+            chapters_of: dict[str, dict[int, dict]] = {}
+            for (submission, chapter), record in records.items():
+                chapters_of.setdefault(submission, {})[chapter] = record
+            gradebook = _Gradebook(out / GRADEBOOK, records, course)
             bar = tqdm(total=len(todo), desc="grading", unit="notebook", disable=None if progress else True)
             with bar:
                 for record in _graded(todo, suites, seed, limits, out, not allow_unconfined, jobs):
                     write_record(out, record)
+                    record = _slim(record)
                     records[(record["submission"], record["chapter"])] = record
                     new.append(record)
-                    mine = [r for (s, _), r in records.items() if s == record["submission"]]
-                    write_student_pages(out, record["submission"], mine)
-                    atomic_write(out / GRADEBOOK, gradebook_text(records, course))
+                    mine = chapters_of.setdefault(record["submission"], {})
+                    mine[record["chapter"]] = record
+                    write_student_pages(out, record["submission"], list(mine.values()))
+                    gradebook.changed()
                     bar.set_postfix_str(f"{record['student']} ch{record['chapter']:02d}", refresh=False)
                     bar.update()
-            atomic_write(out / GRADEBOOK, gradebook_text(records, course))
+            gradebook.write()
             written = ""
             if report:
                 from .class_report import write_report

@@ -3,10 +3,11 @@
 Grading writes one record per graded notebook, ``GRADES/<submission>/chNN/record.json``, next to
 that notebook's feedback; the records are the truth. ``GRADES/gradebook.csv`` (one row per
 student, a column per exercise graded so far, a total per chapter and overall) is rebuilt from
-them after every record, so grading chapter 4 later adds its columns and keeps the others, and
-re-grading one student's chapter changes only that student's cells. Every file is written
-atomically (temporary file, then rename); a run interrupted between a record and the gradebook
-leaves a gradebook the next run rebuilds. One grading run at a time holds ``GRADES/.lock``.
+them (in time proportional to the records: `gradebook_text` makes one pass), so grading chapter 4
+later adds its columns and keeps the others, and re-grading one student's chapter changes only
+that student's cells. Every file is written atomically (temporary file, then rename); a run
+interrupted between a record and the gradebook leaves a gradebook the next run rebuilds. One
+grading run at a time holds ``GRADES/.lock``.
 
 Columns: ``submission`` (the student's key, also their folder in GRADES), ``score`` and
 ``max_score`` (overall, of the chapters graded so far), ``status``, ``student``, ``id`` (the LMS
@@ -105,18 +106,25 @@ def _chapter_order(records, course) -> list[int]:
     return listed + sorted(graded - set(listed))
 
 
-def _exercise_ids(records, course, chapter: int) -> list[str]:
-    listed = next((list(c.exercise_points) for c in course.chapters if c.number == chapter), [])
-    seen = {eid for (_, ch), r in records.items() if ch == chapter for eid in r["exercises"]}
-    return [eid for eid in listed if eid in seen] + sorted(seen - set(listed))
+def _exercise_ids(records, course) -> dict[int, list[str]]:
+    """Per graded chapter, the exercise ids graded so far: book.toml's order, then any others sorted (one pass)."""
+    seen: dict[int, set[str]] = {}
+    for (_, chapter), record in records.items():
+        seen.setdefault(chapter, set()).update(record["exercises"])
+    ids = {}
+    for chapter, found in seen.items():
+        listed = next((list(c.exercise_points) for c in course.chapters if c.number == chapter), [])
+        ids[chapter] = [eid for eid in listed if eid in found] + sorted(found - set(listed))
+    return ids
 
 
-def gradebook_header(records, course) -> list[str]:
+def gradebook_header(records, course, ids: dict[int, list[str]] | None = None) -> list[str]:
+    ids = _exercise_ids(records, course) if ids is None else ids
     header = ["submission", "score", "max_score", "status", "student", "id"]
     for chapter in _chapter_order(records, course):
         tag = f"ch{chapter:02d}"
         header += [f"{tag} total", f"{tag} max", f"{tag} status", f"{tag} late", f"{tag} seed"]
-        header += _exercise_ids(records, course, chapter)
+        header += ids[chapter]
     return header + ["confinement"]
 
 
@@ -134,6 +142,8 @@ def _overall_status(mine: list[dict]) -> str:
 def gradebook_text(records: dict[tuple[str, int], dict], course) -> str:
     """The wide gradebook: one row per student, sorted by submission key; blank cells where nothing was handed in."""
     chapters = _chapter_order(records, course)
+    position = {chapter: i for i, chapter in enumerate(chapters)}
+    ids_of = _exercise_ids(records, course)
     maxima = {}
     for (_, chapter), record in records.items():
         maxima[chapter] = max(maxima.get(chapter, 0.0), float(record["max_score"]))
@@ -142,16 +152,16 @@ def gradebook_text(records: dict[tuple[str, int], dict], course) -> str:
         by_student.setdefault(submission, []).append(record)
     buffer = io.StringIO()
     writer = csv.writer(buffer, lineterminator="\n")
-    writer.writerow(gradebook_header(records, course))
+    writer.writerow(gradebook_header(records, course, ids_of))
     for submission, mine in sorted(by_student.items()):
-        mine.sort(key=lambda r: chapters.index(r["chapter"]))
+        mine.sort(key=lambda r: position[r["chapter"]])
         first = mine[0]
         total = round(sum(float(r["score"]) for r in mine), 4)
         row = [submission, number(total), number(round(sum(maxima.values()), 4)), _overall_status(mine),
                first["student"], first.get("lms_id", "")]
         have = {r["chapter"]: r for r in mine}
         for chapter in chapters:
-            ids = _exercise_ids(records, course, chapter)
+            ids = ids_of[chapter]
             record = have.get(chapter)
             if record is None:
                 row += ["", number(maxima[chapter]), "", "", ""] + [""] * len(ids)

@@ -12,10 +12,19 @@ The release holds
   suites (``cagd_course/_checks/chNN.py``); hidden groups are named, with "checked when your work is
   graded". Nothing imports `cagd_ref` or the hidden suites.
 * ``chapters/NN-slug.ipynb``, the chapter notebooks without the cells tagged ``reference-source``
-  (those display reference implementations of graded functions); with ``book=True`` also
-  ``book/``, the HTML book built from exactly those notebooks.
+  (those display reference implementations of graded functions), each with its executed outputs
+  (figures, tables, the static frames of its explorers; live widget views left out), so that it
+  reads without a kernel. The outputs come from the book's execution cache
+  (`book.build.execute_notebooks`): a chapter `cagd book` executed is not run again. With
+  ``book=True`` also ``book/``, the HTML book built from exactly those notebooks and executions.
+* with ``live=True``, ``chapters/cagd_ref`` and ``chapters/cagd_course`` (the course's figures and
+  explorers, without the grader): what the chapters run, so that every chapter and explorer runs in
+  the students' Jupyter. That is the reference implementation: this mode gives up the promise
+  below, and the README of the release says so.
+* ``README.md`` (which mode, what ``check`` does here) and ``requirements.txt``.
 
-`leaks` looks for what must not be there; the release refuses to finish when it finds any.
+`leaks` looks for what must not be there (in a live release: anything but the shipped runtime); the
+release refuses to finish when it finds any.
 """
 
 from __future__ import annotations
@@ -46,6 +55,8 @@ __all__ = ["Release", "release", "leaks", "load_released", "TAG", "drop_tagged"]
 TAG = "reference-source"
 SHOWS_SOURCE = re.compile(r"(?:show_source|getsource)\(")
 _DIGITS = re.compile(r"-?\d+\.\d{3,}")
+# Images and other binary data stored as base64 (figures in notebook outputs): no case is hidden in them.
+_BASE64 = re.compile(r"[A-Za-z0-9+/=\\\n]{400,}")
 PACKAGE = "cagd_course"
 SUITE_NAMES = ("INPUT_ERRORS", "NEAR_MISS", "Raises", "Mismatch", "_describe", "close", "exact", "_compare",
                "_compare_numbers", "_short", "_unit", "same_up_to_scale")
@@ -63,6 +74,9 @@ class Release:
     problems: list[str] = field(default_factory=list)
     dropped_cells: int = 0
     book: Path | None = None
+    executed: list[int] = field(default_factory=list)  # chapters whose notebooks carry their outputs
+    live: bool = False
+    book_pages: list = field(default_factory=list)  # the book's pages (book.BuiltPage), with --book
 
 
 def _top_level(path: Path, names: tuple[str, ...]) -> str:
@@ -256,16 +270,59 @@ def drop_tagged(notebook_path: Path, target: Path) -> int:
     return dropped
 
 
-README = """# {title}: the exercises
+README = """# Class release: {title}
 
-Work in `exercises/`: each notebook states its exercises, gives a stub to replace and a check cell.
-Open it with Jupyter (`pip install numpy jupyterlab`, then `jupyter lab exercises/`) and run the cells
-from the top. `check("NN.name", name)` runs the visible cases of an exercise on your function, with
-the answers the course expects; the hidden groups of cases are checked when your work is graded.
-Hand in the notebook itself, without renaming the functions.
+Written by `cagd release` ({mode}). Set up once: `pip install -r requirements.txt`, then `jupyter lab`.
 
-`chapters/` holds the chapter notebooks to read{book}.
+## Chapters
+
+`chapters/` holds the chapter notebooks{executed}{book}
+
+{promise}
+
+## Exercises
+
+Work in `exercises/`: each notebook states its exercises, gives a stub to replace and a check cell; run
+its cells from the top. What `check("NN.name", name)` does here: it runs the *visible* cases of that
+exercise on your function, in the notebook's own process, and compares your answers with the course's
+answers shipped with this release (`exercises/cagd_course/cases/`). The hidden groups of cases are only
+named: they run when your work is graded, in a separate, confined process that cannot see this folder,
+so all visible cases passing does not yet mean full marks. (In the course's own repository the same
+`check` runs every case, hidden ones included, in a separate process.) Hand in the notebook itself,
+without renaming the functions.
 """
+
+EXECUTED = (
+    ", executed: their figures, tables and the static frames of each explorer's main slider are stored in them, "
+    "so they read in JupyterLab, on a JupyterHub, on nbviewer and on GitHub without running anything"
+)
+NOT_EXECUTED = " (written without outputs: run `cagd release` without `--no-outputs` to store them)"
+PROMISE = (
+    "This release keeps the course's promise: it holds no reference implementation of a graded function and no "
+    "hidden test case (`cagd release` checked every file before it finished). So the chapters' code cells, which "
+    "call the reference implementation, do not run here: read their stored outputs."
+)
+LIVE = (
+    "This is a **live** release: `chapters/cagd_ref` is the course's reference implementation (every algorithm of "
+    "the course, the graded exercises' included) and `chapters/cagd_course` its figures and explorers, so that "
+    "every chapter and every explorer runs in your Jupyter (run the cells from the top; every control is live). "
+    "The promise that a release holds no reference code does not hold in this mode: the reference solutions of "
+    "the exercises can be read here. What protects grading: handed-in code is graded without the reference (it "
+    "can neither import nor read it), the hidden test cases are not in this release, and the class report flags "
+    "graded functions that are the reference implementation's code once names and formatting are ignored."
+)
+# What students install: for the exercises and reading the chapters, and, live, for running the chapters.
+REQUIREMENTS = ("numpy", "jupyterlab", "jupyterlab-myst")
+LIVE_REQUIREMENTS = ("numpy", "scipy", "sympy", "matplotlib", "ipywidgets", "ipykernel", "pillow", "jupyterlab",
+                     "jupyterlab-myst")
+# Parts of cagd_course a live release's chapters do not run: the grader, the book builder, the command.
+NOT_RUNTIME = ("grading", "book", "cli.py", "__pycache__")
+RUNTIME_INIT = (
+    '"""The course\'s figures and explorers, shipped by `cagd release --live` so the chapters run (no grader)."""'
+    '\n\n__version__ = "{version}"\n'
+)
+# The MIME type of a live widget's view: without the kernel that made it, it shows nothing (or an error).
+WIDGET_VIEW = "application/vnd.jupyter.widget-view+json"
 
 
 def _package(target: Path, course) -> None:
@@ -290,8 +347,15 @@ def _package(target: Path, course) -> None:
 
 
 def release(out: Path | str, chapters: list[int] | None = None, book: bool = False, force: bool = False,
-            progress: bool = True) -> Release:
-    """Write the class release into `out` (which must be new or empty unless `force`)."""
+            progress: bool = True, live: bool = False, execute: bool = True, work: Path | str | None = None,
+            timeout: int = 300) -> Release:
+    """Write the class release into `out` (which must be new or empty unless `force`).
+
+    execute: store each chapter's executed outputs in its released notebook, from the book's execution
+    cache (`work`, default the book's `_build/.book`: chapters `cagd book` executed are not run again);
+    live: ship the runtime the chapters need (the reference among it) beside them; book: build the
+    HTML book from the released notebooks, from the same executions.
+    """
     out = Path(out)
     course = load_course()
     if out.exists() and any(out.iterdir()):
@@ -331,13 +395,30 @@ def release(out: Path | str, chapters: list[int] | None = None, book: bool = Fal
             result.chapters.append(target)
         else:
             result.problems.append(f"chapter {chapter.number}: {chapter.notebook.name} is missing")
+    executed: dict[int, object] = {}
+    if execute:
+        executed = _store_outputs(out, course, [c for c in selected if c.notebook.is_file()], work, timeout,
+                                  progress, result)
+    if live:
+        _runtime(out / "chapters")
+        result.live = True
+    (out / "requirements.txt").write_text(_requirements(course, LIVE_REQUIREMENTS if live else REQUIREMENTS),
+                                          encoding="utf-8")
     if book:
-        result.book = _build_book(out, course, selected, progress)
+        result.book, result.book_pages = _build_book(out, course, selected, progress, executed, timeout)
+    mode = "live: with the runtime the chapters need, the reference implementation among it" if live else \
+        "no reference implementation, no hidden case"
     (out / "README.md").write_text(
-        README.format(title=course.title, book=", and `book/index.html` the book built from them" if book else ""),
+        README.format(
+            title=course.title,
+            mode=mode,
+            executed=EXECUTED if result.executed else NOT_EXECUTED,
+            book="; `book/index.html` is the HTML book built from them." if book else ".",
+            promise=LIVE if live else PROMISE,
+        ),
         encoding="utf-8",
     )
-    found = leaks(out, course)
+    found = leaks(out, course, runtime=live)
     if found:
         shutil.rmtree(out)
         listed = "\n  ".join(found)
@@ -345,9 +426,14 @@ def release(out: Path | str, chapters: list[int] | None = None, book: bool = Fal
     return result
 
 
-def _build_book(out: Path, course, selected, progress: bool) -> Path:
-    """The HTML book of the released chapters: built from a copy of the course holding the filtered notebooks."""
+def _build_book(out: Path, course, selected, progress: bool, executed: dict, timeout: int) -> tuple[Path, list]:
+    """The HTML book of the released chapters: built from a copy of the course holding the released notebooks.
+
+    The executions behind the released notebooks' outputs are recorded in the copy's cache first, so
+    the book shows the same outputs and no chapter is executed again.
+    """
     from ..book import build_book
+    from ..book.build import execute_notebooks
 
     stage = Path(tempfile.mkdtemp(prefix="cagd-release-book-"))
     try:
@@ -360,7 +446,12 @@ def _build_book(out: Path, course, selected, progress: bool) -> Path:
         previous = os.environ.get(COURSE_ENV)
         os.environ[COURSE_ENV] = str(stage)
         try:
-            pages = build_book(out / "book", [c.number for c in selected], progress=progress, work=stage / "_build")
+            staged = {c.number: stage / c.notebook.relative_to(course.root) for c in selected if c.number in executed}
+            if staged:
+                execute_notebooks(staged, stage / "_build", timeout, progress,
+                                  outputs={n: executed[n] for n in staged})
+            pages = build_book(out / "book", [c.number for c in selected], timeout, progress=progress,
+                               work=stage / "_build")
         finally:
             if previous is None:
                 os.environ.pop(COURSE_ENV, None)
@@ -369,9 +460,121 @@ def _build_book(out: Path, course, selected, progress: bool) -> Path:
         failed = [p.error for p in pages if p.error]
         if failed:
             raise RuntimeError("the book of the release did not build:\n" + "\n".join(failed))
-        return out / "book"
+        return out / "book", pages
     finally:
         shutil.rmtree(stage, ignore_errors=True)
+
+
+def _only_displays(cells) -> bool:
+    """True when every one of `cells` is expressions only (displays): dropping them changes no later cell."""
+    for cell in cells:
+        try:
+            body = ast.parse(cell.source).body
+        except SyntaxError:
+            return False
+        if not all(isinstance(node, ast.Expr) for node in body):
+            return False
+    return True
+
+
+def _released_outputs(cell_outputs: list) -> list:
+    """A cell's outputs as a release stores them: without live widget views, which need the kernel that made them."""
+    kept = []
+    for output in cell_outputs:
+        data = output.get("data")
+        if isinstance(data, dict) and WIDGET_VIEW in data:
+            output = dict(output)
+            output["data"] = {k: v for k, v in data.items() if k != WIDGET_VIEW}
+            if not output["data"]:
+                continue
+        kept.append(output)
+    return kept
+
+
+def _attach(target: Path, code_outputs: list, language: dict | None) -> object:
+    """Give the released notebook `target` the outputs of its code cells, in order; return it (with outputs)."""
+    import nbformat
+
+    notebook = nbformat.read(target, as_version=4)
+    code = [c for c in notebook.cells if c.cell_type == "code"]
+    if len(code) != len(code_outputs):
+        raise ValueError(f"{target.name}: {len(code)} code cells, {len(code_outputs)} executed")
+    for count, (cell, ran) in enumerate(zip(code, code_outputs), start=1):
+        if cell.source != ran.source:
+            raise ValueError(f"{target.name}: code cell {count} is not the one executed")
+        cell.execution_count = count if ran.get("execution_count") is not None else None
+        cell.outputs = [nbformat.from_dict(o) for o in _released_outputs(ran.get("outputs", []))]
+        for output in cell.outputs:
+            if output.output_type == "execute_result":
+                output.execution_count = cell.execution_count
+    notebook.metadata.pop("widgets", None)
+    if language:
+        notebook.metadata["language_info"] = language
+    target.write_text(nbformat.writes(notebook) + "\n", encoding="utf-8")
+    return notebook
+
+
+def _store_outputs(out: Path, course, selected, work, timeout: int, progress: bool, result: Release) -> dict:
+    """Store each released chapter's executed outputs in it; return the released notebooks with outputs, by chapter.
+
+    The chapters are executed as the book executes them, through its cache (`book.build.execute_notebooks`):
+    a chapter the book has executed is not run again. A released chapter lacks only display cells of
+    reference listings, so its outputs are the chapter's, those cells' left out; one whose dropped cells
+    could change later ones is executed as released.
+    """
+    import nbformat
+
+    from ..book.build import execute_notebooks
+
+    full = execute_notebooks({c.number: c.notebook for c in selected}, work, timeout, progress)
+    done, again = {}, []
+    for chapter in selected:
+        executed, error = full[chapter.number]
+        if executed is None:
+            result.problems.append(f"chapter {chapter.number}: not executed, released without outputs ({error})")
+            continue
+        cells = [c for c in nbformat.read(chapter.notebook, as_version=4).cells if c.cell_type == "code"]
+        dropped = [c for c in cells if TAG in c.metadata.get("tags", [])]
+        if not _only_displays(dropped):
+            again.append(chapter)
+            continue
+        kept = [ran for cell, ran in zip(cells, executed.cells) if TAG not in cell.metadata.get("tags", [])]
+        target = out / "chapters" / chapter.notebook.name
+        done[chapter.number] = _attach(target, kept, executed.metadata.get("language_info"))
+    if again:
+        rerun = execute_notebooks({c.number: out / "chapters" / c.notebook.name for c in again}, work, timeout,
+                                  progress)
+        for chapter in again:
+            executed, error = rerun[chapter.number]
+            if executed is None:
+                result.problems.append(f"chapter {chapter.number}: not executed, released without outputs ({error})")
+                continue
+            target = out / "chapters" / chapter.notebook.name
+            done[chapter.number] = _attach(target, list(executed.cells), executed.metadata.get("language_info"))
+    result.executed = sorted(done)
+    return done
+
+
+def _runtime(target: Path) -> None:
+    """What the chapters run, beside them: `cagd_ref` and `cagd_course` without the grader, the book and the command."""
+    import cagd_course
+    import cagd_ref
+
+    ignore = shutil.ignore_patterns("__pycache__", "*.pyc")
+    shutil.copytree(Path(cagd_ref.__file__).parent, target / "cagd_ref", ignore=ignore)
+    source = Path(cagd_course.__file__).parent
+    shutil.copytree(source, target / PACKAGE, ignore=lambda folder, names: [
+        n for n in names if n in ("__pycache__",) or n.endswith(".pyc")
+        or (Path(folder) == source and n in NOT_RUNTIME)])
+    (target / PACKAGE / "__init__.py").write_text(RUNTIME_INIT.format(version=cagd_course.__version__),
+                                                  encoding="utf-8")
+
+
+def _requirements(course, names: tuple[str, ...]) -> str:
+    from .autograder import _normalise, _requirement_specs
+
+    specs = _requirement_specs(course)
+    return "".join(specs.get(_normalise(name), name) + "\n" for name in names)
 
 
 def _code_cells(path: Path) -> list[str]:
@@ -392,13 +595,16 @@ def _definitions(source: str):
             yield node
 
 
-def leaks(out: Path, course=None) -> list[str]:
+def leaks(out: Path, course=None, runtime: bool = False) -> list[str]:
     """What in `out` must not be in a release: reference code of a graded function, hidden suites, hidden answers.
 
     Checks every Python file and notebook code cell for a function whose normalised syntax tree is a
     graded function's reference implementation (except one the course's own exercise notebook gives
     students), for `cagd_ref` and the suites' files, for cells that show reference source, and for the
-    inputs and answers of hidden cases (as the grader encodes them) in any file.
+    inputs and answers of hidden cases (as the grader encodes them) in any file, a notebook's outputs
+    included (images and other long base64 data left aside). With `runtime` (a live release) the
+    runtime beside the chapters, `chapters/cagd_ref` and `chapters/cagd_course`, is the reference by
+    design: it is checked for hidden cases only.
     """
     from .similarity import fingerprint, source_fingerprint
 
@@ -406,8 +612,11 @@ def leaks(out: Path, course=None) -> list[str]:
     out = Path(out)
     found = []
     files = [p for p in out.rglob("*") if p.is_file()]
+    shipped = {("chapters", "cagd_ref"), ("chapters", PACKAGE)} if runtime else set()
     for path in files:
         relative = path.relative_to(out)
+        if tuple(relative.parts[:2]) in shipped:
+            continue
         if "cagd_ref" in relative.parts or relative.parts[:2] == ("tests", "hidden"):
             found.append(f"{relative}: part of the reference or of the hidden suites")
     given: set[str] = set()  # what the course's exercise notebooks themselves give students
@@ -434,8 +643,9 @@ def leaks(out: Path, course=None) -> list[str]:
                 (visible if case.visible else hidden_texts).update(telling)
     hidden_texts -= visible
     for path in files:
-        sources = _code_cells(path) if path.suffix == ".ipynb" else [path.read_text(encoding="utf-8")] \
-            if path.suffix == ".py" else []
+        in_runtime = tuple(path.relative_to(out).parts[:2]) in shipped
+        sources = [] if in_runtime else _code_cells(path) if path.suffix == ".ipynb" else \
+            [path.read_text(encoding="utf-8")] if path.suffix == ".py" else []
         for source in sources:
             for node in _definitions(source):
                 eid = references.get(fingerprint(node)[0])
@@ -445,7 +655,7 @@ def leaks(out: Path, course=None) -> list[str]:
                                                                                            source, re.M):
                 found.append(f"{path.relative_to(out)}: a cell shows source code ({source.strip()[:60]!r})")
         if path.suffix in (".json", ".py", ".ipynb", ".md", ".toml", ".html", ".txt"):
-            text = path.read_text(encoding="utf-8", errors="replace")
+            text = _BASE64.sub("", path.read_text(encoding="utf-8", errors="replace"))
             hits = [t for t in hidden_texts if t in text]
             if hits:
                 found.append(f"{path.relative_to(out)}: holds {len(hits)} hidden case(s) or answer(s)")

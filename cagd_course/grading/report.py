@@ -209,8 +209,72 @@ def feedback_html(name: str, results: list[ExerciseResult], score: float, max_sc
     )
 
 
-def gradescope_results(results: list[ExerciseResult], score: float, notes: list[str]) -> dict:
-    """The Gradescope autograder `results.json` structure: one test per exercise."""
+# Gradescope's visibilities of a test (its autograder specification).
+VISIBILITIES = ("visible", "hidden", "after_due_date", "after_published")
+
+
+def _hidden_category(cases: list[CaseResult]) -> bool:
+    """A group of cases none of which is visible: its name is known, its inputs never shown."""
+    return not any(c.visible for c in cases)
+
+
+def _gradescope_split(results: list[ExerciseResult], score: float, notes: list[str], hidden: str) -> dict:
+    """One test per exercise, holding its score and its visible groups; one test per hidden group, shown `hidden`."""
+    tests = []
+    for result in results:
+        groups = result.categories()
+        rows = [row for row in exercise_summary(result) if not _hidden_category(groups[row[0]])]
+        hidden_rows = [row for row in exercise_summary(result) if _hidden_category(groups[row[0]])]
+        lines = []
+        for category, ok, total, failing in rows:
+            lines.append(f"{category}: {ok}/{total}")
+            if failing is not None:
+                lines.extend("    " + line.strip() for line in _failure_detail(result, failing))
+        if result.stopped:
+            lines.append(result.stopped)
+        failing = _first_failure(rows)
+        if failing is not None and not result.stopped:
+            lines.append(f"Hint: {failure_hint(result, failing)}")
+        if hidden_rows:
+            lines.append(f"Hidden groups ({', '.join(row[0] for row in hidden_rows)}): their results are shown "
+                         "when grades are published; the score above counts them.")
+        tests.append({
+            "name": result.id,
+            "score": result.score,
+            "max_score": result.points,
+            "status": "passed" if result.score >= result.points else "failed",
+            "output": "\n".join(lines),
+            "visibility": "visible",
+        })
+        for category, ok, total, failing in hidden_rows:
+            lines = [f"{ok}/{total} cases pass"]
+            if failing is not None:
+                lines.extend(line.strip() for line in _failure_detail(result, failing))
+                if not result.stopped:
+                    lines.append(f"Hint: {failure_hint(result, failing)}")
+            tests.append({
+                "name": f"{result.id}: hidden group \"{category}\"",
+                "status": "passed" if ok == total else "failed",
+                "output": "\n".join(lines),
+                "visibility": hidden,
+            })
+    return {"score": score, "output": "\n".join(notes), "tests": tests}
+
+
+def gradescope_results(
+    results: list[ExerciseResult], score: float, notes: list[str], hidden_visibility: str | None = None
+) -> dict:
+    """The Gradescope autograder `results.json` structure: one test per exercise.
+
+    With `hidden_visibility` (one of `VISIBILITIES`, e.g. "after_published") the groups of hidden
+    cases become tests of their own with that visibility, each with its first failure as the
+    feedback page tells it (never the inputs); the exercise's test keeps its score and shows the
+    visible groups, each with its first failure. Without it, every group is told in the exercise's test.
+    """
+    if hidden_visibility is not None:
+        if hidden_visibility not in VISIBILITIES:
+            raise ValueError(f"hidden_visibility: one of {VISIBILITIES}, not {hidden_visibility!r}")
+        return _gradescope_split(results, score, notes, hidden_visibility)
     tests = []
     for result in results:
         lines = [f"{category}: {ok}/{total}" for category, ok, total, _ in exercise_summary(result)]

@@ -38,7 +38,7 @@ from ..manifest import COURSE_ENV, find_course_root
 from . import sandbox
 from .worker import PACKAGES
 
-__all__ = ["Limits", "Task", "RunResult", "run_tasks", "probe", "shutdown", "worker_path"]
+__all__ = ["Limits", "Task", "RunResult", "run_tasks", "probe", "shutdown", "worker_path", "run_as"]
 
 WORKER = Path(__file__).with_name("worker.py")
 # A zygote's start is an interpreter importing NumPy, on a machine that may be busy grading.
@@ -249,6 +249,7 @@ class _ExecWorker:
 
     def __init__(self, workdir: str):
         read_fd, write_fd = os.pipe()
+        user = {} if _RUN_AS[0] is None else {"user": _RUN_AS[0][0], "group": _RUN_AS[0][1], "extra_groups": []}
         self.proc = subprocess.Popen(
             [sys.executable, "-I", "-S", str(WORKER), str(write_fd)],
             stdin=subprocess.PIPE,
@@ -258,6 +259,7 @@ class _ExecWorker:
             env=_environment(workdir),
             pass_fds=(write_fd,),
             start_new_session=True,
+            **user,
         )
         os.close(write_fd)
         self.request, self.events, self.output = self.proc.stdin, read_fd, self.proc.stdout.fileno()
@@ -384,6 +386,8 @@ def _spawn(workdir: str):
     if not _forks_workers():
         return _ExecWorker(workdir)
     options = {"disable": sandbox.disabled()}
+    if _RUN_AS[0] is not None:
+        options["user"] = list(_RUN_AS[0])
     try:
         return _zygote().spawn(options)
     except _StartError:
@@ -402,6 +406,34 @@ def shutdown() -> None:
 def set_owner(pid: int) -> None:
     """Name `pid` as the grading run's process in the zygote's command line (for `ps`, and tests)."""
     _OWNER[0] = pid
+
+
+# The unprivileged user (uid, gid) graded code runs as, when the grader runs as root (`run_as`).
+_RUN_AS: list[tuple[int, int] | None] = [None]
+
+
+def run_as(user: str | int | None) -> tuple[int, int] | None:
+    """Run graded code as `user` (a name or uid; None: as the grader) from now on; returns its (uid, gid).
+
+    Only root can hand its workers to another user (Gradescope runs its autograders as root); the
+    user must exist and must not be root. Each worker's scratch folder is given to that user, and
+    everything else of the grader stays out of its reach by ownership and modes as well as Landlock.
+    """
+    if user is None or user == "":
+        _RUN_AS[0] = None
+        return None
+    import pwd
+
+    try:
+        entry = pwd.getpwuid(user) if isinstance(user, int) else pwd.getpwnam(str(user))
+    except KeyError:
+        raise ValueError(f"run_as: no user {user!r} on this machine") from None
+    if entry.pw_uid == 0:
+        raise ValueError("run_as: graded code must not run as root")
+    if os.geteuid() != 0:
+        raise PermissionError(f"run_as: only root can run graded code as {entry.pw_name}")
+    _RUN_AS[0] = (entry.pw_uid, entry.pw_gid)
+    return _RUN_AS[0]
 
 
 def _forget_after_fork() -> None:
@@ -430,6 +462,8 @@ class _Session:
         self.sandboxed = False
         self.loaded = False
         self.workdir = tempfile.mkdtemp(prefix="cagd-grade-")
+        if _RUN_AS[0] is not None:
+            os.chown(self.workdir, *_RUN_AS[0])
         path = _allowed_path(allow_reference)
         hidden, checkout = _hidden_folders()
         policy = sandbox.policy(self.workdir, limits.memory_mb, path, allow_reference, hidden, checkout, required)

@@ -124,6 +124,8 @@ def policy(
         "file_bytes": FILE_BYTES,
         "workdir": workdir,
         "readable": [*readable_roots(roots, tuple(sorted(hidden)), checkout, sys.prefix), workdir],
+        # What a worker running as a user of its own must find closed by file modes where Landlock is missing.
+        "protected": [*sorted(hidden), *([checkout] if checkout else [])],
         "trusted": bool(allow_reference),
         "required": bool(required) and not allow_reference,
         "disable": disabled(),

@@ -16,7 +16,6 @@ import builtins
 import hashlib
 import inspect
 import textwrap
-from itertools import combinations
 
 __all__ = ["fingerprint", "function_fingerprints", "flag_pairs", "MIN_NODES"]
 
@@ -124,32 +123,37 @@ def source_fingerprint(function) -> tuple[str, int] | None:
 
 
 def flag_pairs(records: list[dict], reference: dict[str, str], ignore: dict[str, set[str]]) -> list[dict]:
-    """Pairs of submissions of one chapter sharing graded functions, and submissions equal to the reference.
+    """Submissions of one chapter sharing graded functions, and submissions equal to the reference.
 
     records: gradebook records (with their ``fingerprints``); reference: {exercise id: hash};
     ignore: {exercise id: hashes never flagged (the stub)}. Each flag: chapter, the two names (the
     second "reference implementation" for the reference), and the exercise ids that are identical.
+
+    Fingerprints are hashed into buckets, one per exercise and hash, and only submissions in one
+    bucket are compared: the work grows with the class, not with its square. Each bucket is told
+    as its first member (by name) paired with each other member, so a group of k identical
+    functions gives k - 1 flags, not k(k - 1)/2; every member of a group is flagged with its first.
     """
     flags = []
-    by_chapter: dict[int, list[dict]] = {}
+    # (chapter, first, second) -> exercise ids, filled bucket by bucket
+    pairs: dict[tuple[int, str, str], list[str]] = {}
+    buckets: dict[tuple[int, str, str], list[str]] = {}
     for record in records:
-        by_chapter.setdefault(record["chapter"], []).append(record)
-
-    def kept(record):
-        return {
-            eid: h for eid, (h, size) in record.get("fingerprints", {}).items()
-            if size >= MIN_NODES and h not in ignore.get(eid, set())
-        }
-
-    for chapter, mine in sorted(by_chapter.items()):
-        prints = {r["submission"]: kept(r) for r in mine}
-        for a, b in combinations(sorted(prints), 2):
-            same = sorted(eid for eid, h in prints[a].items() if prints[b].get(eid) == h)
-            if same:
-                flags.append({"chapter": chapter, "first": a, "second": b, "exercises": same})
-        for name in sorted(prints):
-            same = sorted(eid for eid, h in prints[name].items() if reference.get(eid) == h)
-            if same:
-                flags.append({"chapter": chapter, "first": name, "second": "reference implementation",
-                              "exercises": same})
+        chapter, name = record["chapter"], record["submission"]
+        for eid, (h, size) in record.get("fingerprints", {}).items():
+            if size < MIN_NODES or h in ignore.get(eid, set()):
+                continue
+            buckets.setdefault((chapter, eid, h), []).append(name)
+            if reference.get(eid) == h:
+                pairs.setdefault((chapter, name, ""), []).append(eid)
+    for (chapter, eid, _), members in buckets.items():
+        if len(members) < 2:
+            continue
+        first, *others = sorted(set(members))
+        for other in others:
+            pairs.setdefault((chapter, first, other), []).append(eid)
+    for (chapter, first, second), exercises in sorted(pairs.items(), key=lambda kv: (kv[0][0], kv[0][2] == "",
+                                                                                      kv[0][1], kv[0][2])):
+        flags.append({"chapter": chapter, "first": first, "second": second or "reference implementation",
+                      "exercises": sorted(exercises)})
     return flags
