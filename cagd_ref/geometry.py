@@ -88,7 +88,7 @@ def rotate_about_axis(point, axis_point, axis_direction, angle) -> np.ndarray:
     axis_direction: (3,), the direction nonzero but not necessarily a unit
     vector. angle: radians, right-handed about the axis direction. The vector
     form of Notes §1.3, eqs. (1.6)-(1.9): C = B + ((P-B)·n) n, u = P - C,
-    v = n × u, P' = C + u cos θ + v sin θ. The notes' example turns (5, 7, 3) a
+    v = n × u, P* = C + u cos θ + v sin θ. The notes' example turns (5, 7, 3) a
     quarter turn about the axis through (1, 1, 1) along (2, 1, 2):
 
     >>> from cagd_ref.geometry import rotate_about_axis

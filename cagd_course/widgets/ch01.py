@@ -102,8 +102,8 @@ class RotationExplorer(Explorer):
     def describe(self, state: dict) -> str:
         # The colour key lives here rather than in a legend, which would double the drawing time.
         return (
-            f"P′ = {_fmt(state['point'])}<br>axis n = {_fmt(state['axis'])}<br>"
-            f"{_swatch('C1')} P &nbsp; {_swatch('C3')} P′ and the arc of θ = {state['angle']:.0f}° &nbsp; "
+            f"P* = {_fmt(state['point'])}<br>axis n = {_fmt(state['axis'])}<br>"
+            f"{_swatch('C1')} P &nbsp; {_swatch('C3')} P* and the arc of θ = {state['angle']:.0f}° &nbsp; "
             f"{_swatch('C0')} circle of rotation &nbsp; {_swatch('0.4')} its centre C &nbsp; {_swatch('0.3')} the axis "
             f"through B (square)"
         )
@@ -119,7 +119,7 @@ def rotation_explorer(
     the sliders' starting values.
 
     `update` returns {"point" (3,), "matrix" (4, 4), "original", "axis" (unit),
-    "center", "circle" (121, 3), "arc" (61, 3) from P to P′}; matrix @ (P, 1) gives (point, 1).
+    "center", "circle" (121, 3), "arc" (61, 3) from P to P*}; matrix @ (P, 1) gives (point, 1).
     """
     return RotationExplorer(point, axis_point, axis_direction, angle)
 
