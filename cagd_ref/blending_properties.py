@@ -259,7 +259,7 @@ def variation_diminishing(values, probes: int = 600, seed: int = 0) -> Verdict:
         k = bad[0]
         heights = np.round(side(polygons)[k], 4).tolist()
         return Verdict(False, f"a line crosses the curve {c[k]} times but its control polygon only {p[k]} times "
-                              f"(scaled control point heights above the line {heights})")
+                              f"(signed heights of the control points above the line, scaled: {heights})")
     return Verdict(True, f"no counterexample in {probes} random polygon/line pairs, each curve sampled at "
                          f"{len(values)} parameters (evidence, not proof)")
 

@@ -163,10 +163,36 @@ class VariationDiminishingExplorer(Explorer):
         ax.set_xlim(self.box[0][0], self.box[1][0])
         ax.set_ylim(self.box[0][1], self.box[1][1])
         ax.set_aspect("equal", adjustable="box")
+        if not state["holds"]:
+            self._zoom(ax, state, color)
         verdict = "c ≤ p" if state["holds"] else "c > p: not variation diminishing"
         # Two lines: the counts, then the verdict (one line would run past a narrow frame when c > p).
         ax.set_title(f"{FORM_NAMES[state['form']]} curve: c = {state['c']} crossings (dots), "
                      f"polygon: p = {state['p']} (squares)\n{verdict}", fontsize=9)
+
+    def _zoom(self, ax, state: dict, color) -> None:
+        """A counterexample can be tiny (a dip of 0.1 on a 6-unit frame): enlarge the curve's crossings in an inset."""
+        hits = state["curve_crossings"]
+        low, high = hits.min(axis=0), hits.max(axis=0)
+        centre, span = (low + high) / 2, max(float(np.max(high - low)), 1e-3)
+        x_half = 0.75 * span
+        near = state["curve"][np.abs(state["curve"][:, 0] - centre[0]) <= x_half]  # what the inset shows
+        near = np.vstack([near, hits]) if len(near) else hits
+        y_half = 0.75 * max(float(np.ptp(near[:, 1])), 0.05 * span) + 1e-9
+        centre = np.array([centre[0], (near[:, 1].min() + near[:, 1].max()) / 2])
+        inset = ax.inset_axes([0.03, 0.6, 0.42, 0.36])
+        inset.plot(*self.points.T, "--", color="0.55", linewidth=1)
+        inset.plot(*self.points.T, "o", color="0.3", markersize=4)
+        inset.plot(*state["curve"].T, color=color, linewidth=1.5)
+        a, b, c = state["line"]
+        foot, direction = -c * np.array([a, b]), np.array([-b, a])
+        inset.plot(*(foot + np.outer([-100.0, 100.0], direction)).T, color="k", linewidth=1)
+        inset.plot(*hits.T, "o", color=color, markersize=4)
+        inset.set_xlim(centre[0] - x_half, centre[0] + x_half)
+        inset.set_ylim(centre[1] - y_half, centre[1] + y_half)
+        inset.set_xticks([])
+        inset.set_yticks([])
+        ax.indicate_inset_zoom(inset, edgecolor="0.4")
 
     def describe(self, state: dict) -> str:
         mark = "✓ c ≤ p" if state["holds"] else "<b style='color:#b00'>✗ c &gt; p</b>"

@@ -250,13 +250,13 @@ EXERCISES = [
         cases=overhauser_point_cases,
         compare=close(1e-9, 1e-9),
         hint="Segment j = floor(t) uses points j..j+3 with u = t - j and runs from points[j+1] to points[j+2]; at "
-        "t = m-3 use the last segment with u = 1. The end tangents are half the chords: (P2 - P0)/2 and (P3 - P1)/2.",
+        "t = L-3 use the last segment with u = 1. The end tangents are half the chords: (P2 - P0)/2 and (P3 - P1)/2.",
         rules={
-            EDGE: "except that $t=m-3$ (the very end) belongs to the last segment with $u=1$",
+            EDGE: "except that $t=L-3$ (the very end) belongs to the last segment with $u=1$",
             SHAPES: "`t`: a number (return one point, shape `(d,)`) or a 1-D array of k numbers (return `(k, d)`); "
                 "different values may fall in different segments.",
             BAD: "Raise a `ValueError` for fewer than 4 points, `points` that are not two-dimensional, NaN or "
-                "infinite coordinates or parameters, or any `t` outside $[0, m-3]$.",
+                "infinite coordinates or parameters, or any `t` outside $[0, L-3]$.",
         },
     ),
     Exercise(
@@ -281,13 +281,13 @@ EXERCISES = [
         "points j..j+2 and the parabola through j+1..j+3 (Neville: interpolate linearly twice), blended with the "
         "weight (t - t_j+1)/(t_j+2 - t_j+1). With params 0, 1, 2, ... the curve must be the Overhauser curve.",
         rules={
-            EDGE: "`t` may be any value in $[t_1, t_{m-2}]$, both ends included; $t=t_{m-2}$ belongs to the last "
+            EDGE: "`t` may be any value in $[t_1, t_{L-2}]$, both ends included; $t=t_{L-2}$ belongs to the last "
                 "segment.",
             SHAPES: "`t`: a number (return one point, shape `(d,)`) or a 1-D array of k numbers (return `(k, d)`); "
                 "a 0-d array counts as a number.",
             BAD: "Raise a `ValueError` for fewer than 4 points, `points` that are not two-dimensional, `params` "
                 "whose length is not the number of points or that do not strictly increase, NaN or infinite "
-                "values, or any `t` outside $[t_1, t_{m-2}]$.",
+                "values, or any `t` outside $[t_1, t_{L-2}]$.",
         },
     ),
     Exercise(
