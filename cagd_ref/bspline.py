@@ -522,9 +522,11 @@ def bspline_basis(knots, degree: int, i: int, t):
 def basis_matrix(knots, degree: int, t) -> np.ndarray:
     """All c basis functions at k parameters by the Cox-de Boor recurrence: (k, c), rows sum to 1. Notes §6.14.3.
 
-    N_m^p = ω_m^p N_m^(p-1) + (1 - ω_(m+1)^p) N_(m+1)^(p-1) with
-    ω_m^p(t) = (t - u_m) / (u_(m+p) - u_m), or 0 where u_(m+p) = u_m, on the
-    knots padded with one copy of each end knot (the c + n + 1 convention).
+    N_i^m = ω_i^m N_i^(m-1) + (1 - ω_(i+1)^m) N_(i+1)^(m-1) for m = 1, ..., n with
+    ω_i^m(t) = (t - t_(i-1)) / (t_(i+m-1) - t_(i-1)), or 0 where the two knots are equal,
+    starting from the step functions N_i^0 = 1 on [t_(i-1), t_i). The knots t_0 ... t_(c+n-2)
+    get one dummy knot at each end, t_(-1) = t_0 and t_(c+n-1) = t_(c+n-2) (the c + n + 1
+    convention): `padded[k]` is t_(k-1), and the loop variable p is the degree m.
     A number t gives one row, (1, c).
 
     Ref: C. de Boor, On calculating with B-splines, J. Approx. Theory 6, 1972; M. G. Cox, The numerical

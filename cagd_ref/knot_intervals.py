@@ -12,7 +12,7 @@ shape. Two kinds of curve are handled, chosen by the keyword `degree`:
 * closed periodic curves (``degree=n``): one interval per control point,
   d_i on the edge P_i P_(i+1) (odd n) or on the vertex P_i (even n), indices
   taken cyclically. With the knot origin at the start of d_0, control point i
-  has the polar label f(t_(i+s), ..., t_(i+s+n-1)) where s = -((n-1)//2).
+  has the polar label P(t_(i+s), ..., t_(i+s+n-1)) where s = -((n-1)//2).
 
 Points are (c, d) float arrays, as everywhere in `cagd_ref`.
 """
@@ -69,7 +69,7 @@ def knots_from_intervals(intervals, start: float = 0.0) -> np.ndarray:
 
 
 def _offset(n: int) -> int:
-    """s with control point i of a closed curve labelled f(t_(i+s), ..., t_(i+s+n-1))."""
+    """s with control point i of a closed curve labelled P(t_(i+s), ..., t_(i+s+n-1))."""
     return -((n - 1) // 2)
 
 
@@ -281,8 +281,12 @@ def quadratic_bezier_points(points, intervals, *, degree: int | None = None) -> 
 def hodograph_intervals(points, intervals, *, degree: int | None = None):
     """The derivative curve, degree n-1 with the same knot intervals: (points, intervals). Notes §6.13.4, (6.6).
 
-    Q_i = c_i (P_(i+1) - P_i), where c_i = n / (sum of the n intervals between
-    the two points' labels): the inverse of the average of n neighbouring intervals.
+    Its control points are the differences ν_i (P_(i+1) - P_i), where ν_i = n / (sum of the
+    n intervals between the two points' labels): the inverse of the average of n neighbouring
+    intervals. A closed hodograph is numbered like every closed degree-(n-1) curve here, so the
+    same interval list goes with it: for odd n its point i is H_i = ν_i (P_(i+1) - P_i), for
+    even n it is H_i = ν_(i-1) (P_i - P_(i-1)), one place later than the notes' (6.6) numbers it
+    (numbered as there, the edge H_i H_(i+1) of an even-degree hodograph would carry d_(i+1), not d_i).
     Open curves drop the two outermost intervals (the knot vector loses its end knots).
     """
     if degree is None:
@@ -299,7 +303,8 @@ def hodograph_intervals(points, intervals, *, degree: int | None = None):
     if np.any(spread == 0):
         raise ValueError("intervals: n consecutive zero intervals make the curve discontinuous")
     q = (n / spread)[:, None] * (pts[np.mod(i + 1, c)] - pts)
-    # Q_i has the label starting at t_(i+s+1); the degree n-1 convention starts labels at i + s'.
+    # q_i has the label starting at t_(i+s+1); the degree n-1 convention starts labels at i + s'
+    # (s' = s + 1 for odd n, s' = s for even n): for even n, q_i is the hodograph's point i + 1.
     return np.roll(q, s + 1 - _offset(n - 1), axis=0), d.copy()
 
 

@@ -202,18 +202,19 @@ def _knot_value_label(ax, text: str, where, tangent, polygon: np.ndarray) -> Non
 
 def plot_bspline(ax, points, knots, labels=True, knot_marks: bool = True, knot_values: bool = True,
                  bezier_polygons: bool = False, colors=SEGMENT_COLORS, polygon_legend: str | None = "control polygon",
-                 **style):
+                 polygon_style: dict | None = None, **style):
     """Draw a planar B-spline: its polygon, each segment in its own colour, the knots on the curve. Notes §6.2, §6.3.
 
     points: (c, 2); knots: (c+n-1,). labels: True (polar labels P(...)),
     "index" (P_0, P_1, ...), False, or c strings. `knot_marks` ticks the
     curve at the knots, `knot_values` writes t=... there. With `bezier_polygons` the
-    Bézier control polygon of every segment is drawn too (dotted). `style`
-    goes to the curve's lines. Returns ax.
+    Bézier control polygon of every segment is drawn too (dotted). `polygon_style`
+    (matplotlib line keywords) replaces the grey dashed look of the control polygon,
+    e.g. to tell a new polygon from an old one; `style` goes to the curve's lines. Returns ax.
     """
     pts = as_points(points)
     n = degree(pts, knots)
-    plot_control_polygon(ax, pts, labels=False, legend=polygon_legend)
+    plot_control_polygon(ax, pts, labels=False, legend=polygon_legend, **(polygon_style or {}))
     intervals, samples = segment_samples(pts, knots)
     for k, curve in enumerate(samples):
         color = colors[k % len(colors)]
@@ -385,8 +386,14 @@ def plot_knot_intervals(ax, points, intervals, degree: int | None = None, text_c
         ring = np.vstack([pts, pts[:1]]) if degree is not None else pts
         plot_control_polygon(ax, ring, labels=False, **style)
     if degree is None and len(places) > len(pts) - 1:
-        ax.plot(*np.vstack([places[0], pts[0]]).T, ":", color="0.5")
-        ax.plot(*np.vstack([pts[-1], places[-1]]).T, ":", color="0.5")
+        # Phantom edges (or the steps to phantom vertices) are half as long as the end leg they continue:
+        # draw them dotted out to the last phantom vertex (a small circle), well past the end point's label.
+        extra = (len(d) - len(pts) + 1) // 2
+        outer_start = pts[0] + extra * 0.5 * (pts[0] - pts[1])
+        outer_end = pts[-1] + extra * 0.5 * (pts[-1] - pts[-2])
+        for end, outer in ((pts[0], outer_start), (pts[-1], outer_end)):
+            ax.plot(*np.vstack([end, outer]).T, ":", color="0.35", linewidth=1.4)
+            ax.plot(*outer, "o", color="0.35", markersize=3.5, markerfacecolor="white")
     normals = _label_normals(places, degree is not None, pts)
     # The notes number an open curve's intervals so that d_i sits on edge P_i P_(i+1) (or vertex P_i):
     # the end-condition intervals before P_0 get negative numbers.

@@ -69,6 +69,8 @@ CHAPTER_KNOTS = bezier_end_knots(len(CHAPTER_POINTS), 3)
 PENTAGON = np.array([[0.0, 0.0], [4.0, -0.5], [5.5, 2.5], [2.5, 5.0], [-1.0, 3.0]])
 PENTAGON_INTERVALS = notes_example("06.interval_splitting").inputs["intervals"]
 BASIS_SAMPLES = 301
+# The polygon after knot insertion, drawn over the old grey dashed one (the chapter's figure uses the same).
+NEW_POLYGON_STYLE = {"color": "0.15", "linestyle": "-", "linewidth": 1.1, "markersize": 4}
 SAME_CURVE_TOL = 1e-9
 
 
@@ -289,9 +291,10 @@ class KnotInsertionExplorer(Explorer):
         }
 
     def draw(self, ax, state: dict) -> None:
+        # The old polygon grey and dashed, the new one solid and dark: the two are told apart at a glance.
+        ax.plot(*self.points.T, "o--", color="0.6", markersize=5, linewidth=1, label="old polygon")
         plot_bspline(ax, state["points"], state["knots"], labels=False, knot_values=False, polygon_legend="new polygon",
-                     alpha=0.8)
-        ax.plot(*self.points.T, "o--", color="0.55", markersize=5, linewidth=1, label="old polygon")
+                     polygon_style=NEW_POLYGON_STYLE, alpha=0.8)
         new = state["points"][state["new"]]
         ax.plot(*new.T, "o", color="C3", markersize=8, markerfacecolor="white", markeredgewidth=2, label="new points")
         labels = control_point_labels(state["knots"], self.degree)

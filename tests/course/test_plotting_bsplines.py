@@ -36,6 +36,38 @@ def test_interval_labels_hang_one_phantom_past_each_end_of_an_open_cubic():
     assert np.allclose(closed, POINTS[:4])  # even degree: on the vertices
 
 
+def test_phantom_edges_reach_past_the_end_points():
+    # Figure 6.11: the dotted phantom edge runs from P_0 to a phantom vertex half the end leg away,
+    # with its interval written at the middle (not a stub hidden under the end point's label).
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots()
+    bsplines.plot_knot_intervals(ax, POINTS, np.diff(KNOTS), polygon=False)
+    dotted = [line.get_xydata() for line in ax.get_lines() if line.get_linestyle() == ":"]
+    starts = {tuple(np.round(xy[0], 9)): xy[-1] for xy in dotted}
+    assert np.allclose(starts[tuple(POINTS[0])], POINTS[0] + 0.5 * (POINTS[0] - POINTS[1]))
+    assert np.allclose(starts[tuple(POINTS[-1])], POINTS[-1] + 0.5 * (POINTS[-1] - POINTS[-2]))
+    plt.close(fig)
+
+
+def test_plot_bspline_takes_a_style_for_its_polygon():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots()
+    bsplines.plot_bspline(ax, POINTS, KNOTS, labels=False, polygon_legend="new",
+                          polygon_style={"color": "k", "linestyle": "-"})
+    polygon = next(line for line in ax.get_lines() if line.get_label() == "new")
+    assert polygon.get_linestyle() == "-" and polygon.get_color() == "k"
+    assert len(polygon.get_xdata()) == len(POINTS)
+    plt.close(fig)
+
+
 def test_closed_curve_points_are_periodic():
     d = np.array([1.0, 2.0, 1.0, 1.5, 0.5])
     pentagon = np.array([[0, 0], [3, 0], [4, 2], [2, 4], [-1, 2]], dtype=float)

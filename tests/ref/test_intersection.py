@@ -46,7 +46,7 @@ def test_every_public_name_is_tested():
         "intersect_by_subdivision", "monotone_breaks", "intersect_by_intervals", "implicit_by_nullspace",
         "intersect_by_implicitization", "fat_line", "perpendicular_fat_line", "clip_range", "clip_curve",
         "homogeneous_fat_line", "explicit_meets", "clip_one_sided", "clip_trace", "search_steps", "curve_piece",
-        "intersect_curves",
+        "intersect_curves", "bezier_clipping", "merge_touching",
     }
     assert set(x.__all__) == tested
 
@@ -680,6 +680,76 @@ def test_intersections_of_the_notes_and_the_course_examples():
     assert np.hypot(*point) == pytest.approx(1, abs=1e-12)
     np.testing.assert_allclose(point, rational.results["point"], atol=1e-7)
     np.testing.assert_allclose(x.intersect_curves(cubic, arc, q_weights=weights), found[:, ::-1], atol=1e-11)
+
+
+# The plain loop of the chapter's algorithm box: the same intersections, the same first clips as the notes.
+PLAIN_CASES = [
+    ("clip_curves", None), ("five_intersections", None), ("two_intersections", None), ("perpendicular", None),
+    ("rational_clip", "p_weights"),
+]
+
+
+@pytest.mark.parametrize("name, weights", PLAIN_CASES)
+def test_the_plain_loop_finds_what_intersect_curves_finds(name, weights):
+    ex = example(name)
+    options = {} if weights is None else {"p_weights": ex.inputs[weights]}
+    plain = x.bezier_clipping(*ex.args("p", "q"), **options)
+    np.testing.assert_allclose(plain, x.intersect_curves(*ex.args("p", "q"), **options), atol=1e-8)
+
+
+def test_the_plain_loop_reproduces_the_notes_clips_and_handles_the_hard_cases():
+    ex = example("iterating")
+    log = []
+    x.bezier_clipping(*ex.args("p", "q"), perpendicular=False, log=log)
+    clips = [event for event in log if event[0] in ("clip P", "clip Q")]
+    np.testing.assert_allclose([t for _, t, _ in clips[0::2][:4]], ex.results["p_ranges"], atol=5e-9)
+    np.testing.assert_allclose([u for _, _, u in clips[1::2][:4]], ex.results["q_ranges"], atol=5e-9)
+    cubic = [(0.0, 0.0), (1.0, 2.0), (3.0, 2.0), (4.0, 0.0)]
+    np.testing.assert_allclose(x.bezier_clipping(cubic, [(4.0, 0.0), (5.0, 3.0), (6.0, -1.0)]), [[1.0, 0.0]], atol=1e-9)
+    loop = [(0.0, 0.0), (3.0, 3.0), (-3.0, 3.0), (0.0, 0.0)]
+    np.testing.assert_allclose(x.bezier_clipping(loop, [(0.0, 0.0), (1.0, -1.0)]), [[0.0, 0.0], [1.0, 0.0]], atol=1e-9)
+    touching = x.bezier_clipping([(0.0, 1.0), (0.25, -1.0), (1.0, 1.0)], [(0.0, 0.0), (1.0, 0.0)])
+    np.testing.assert_allclose(touching, x.intersect_curves([(0.0, 1.0), (0.25, -1.0), (1.0, 1.0)],
+                                                            [(0.0, 0.0), (1.0, 0.0)]), atol=1e-6)
+    with pytest.raises(RuntimeError, match="overlap"):
+        x.bezier_clipping(cubic, cubic, max_rounds=200)
+    with pytest.raises(ValueError, match="q_weights"):
+        x.bezier_clipping(cubic, cubic, q_weights=[1.0, -1.0, 1.0, 1.0])
+
+
+def test_the_pad_keeps_the_intersection_on_the_split_point():
+    # Without widening the fat lines, rounding in the halves clips away (0.5, 0.5) of the S-curves.
+    five = example("five_intersections")
+    expected = np.column_stack([five.results["t"], five.results["u"]])
+    np.testing.assert_allclose(x.bezier_clipping(*five.args("p", "q")), expected, atol=1e-8)
+    unpadded = x.bezier_clipping(*five.args("p", "q"), pad=0.0)
+    assert len(unpadded) == 4 and not np.any(np.all(np.abs(unpadded - 0.5) < 1e-6, axis=1))
+
+
+def test_the_plain_loop_passes_every_case_of_the_hidden_suite_of_exercise_7_6():
+    # Chapter 7 says so: `bezier_clipping` is the staged recipe of exercise 7.6, and that recipe is enough.
+    from pathlib import Path
+
+    from cagd_course.grading.engine import _load_suite_file
+    from cagd_course.grading.suite import Raises, expected_value
+
+    suite = Path(__file__).resolve().parents[1] / "hidden" / "ch07.py"
+    exercise = next(e for e in _load_suite_file(suite) if e.id == "07.intersect_curves")
+    compare = exercise.comparison()
+    for case in exercise.cases(np.random.default_rng(0)):
+        try:
+            received = x.bezier_clipping(*case.args, **case.kwargs)
+        except (ValueError, TypeError, RuntimeError) as err:
+            received = Raises(type(err).__name__, str(err))
+        assert compare(expected_value(exercise, case), received) is None, (case.category, case.args)
+
+
+def test_merge_touching_joins_chains_of_boxes():
+    boxes = [((0.1, 0.2), (0.1, 0.2)), ((0.3, 0.4), (0.3, 0.4)), ((0.2, 0.3), (0.2, 0.3)), ((0.8, 0.8), (0.1, 0.1))]
+    np.testing.assert_allclose(x.merge_touching(boxes, gap=0.0), [[0.25, 0.25], [0.8, 0.1]])
+    assert x.merge_touching([]).shape == (0, 2)
+    with pytest.raises(ValueError, match="boxes"):
+        x.merge_touching([((0.1, np.nan), (0.1, 0.2))])
 
 
 def _resultant_intersections(p, q):

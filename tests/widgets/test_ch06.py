@@ -98,6 +98,17 @@ def test_knot_insertion_keeps_the_curve(times):
     assert (state["point"] is None) == (times < 3)
 
 
+def test_knot_insertion_draws_the_old_and_the_new_polygon_apart():
+    # The old polygon grey and dashed, the new one solid: a reader tells them apart at a glance.
+    explorer = widgets.knot_insertion_explorer(POINTS, KNOTS)
+    explorer.update(t=1.7, times=1)
+    lines = {line.get_label(): line for line in explorer.ax.get_lines()}
+    old, new = lines["old polygon"], lines["new polygon"]
+    assert old.get_linestyle() == "--" and new.get_linestyle() == "-"
+    assert old.get_color() != new.get_color()
+    assert len(new.get_xdata()) == len(POINTS) + 1
+
+
 def test_inserting_a_full_multiplicity_exposes_the_curve_point():
     explorer = widgets.knot_insertion_explorer(POINTS, KNOTS)
     state = explorer.update(t=2.2, times=3)

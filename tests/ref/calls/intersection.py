@@ -40,4 +40,6 @@ CALLS = {
     "search_steps": Call((OTHER, CUBIC, "intervals"), {"tol": 1e-9}),
     "curve_piece": Call((QUARTER, [0.25, 0.75]), {"weights": QUARTER_W}),
     "intersect_curves": Call((QUARTER, OTHER), RATIONAL_PAIR),
+    "bezier_clipping": Call((QUARTER, OTHER), RATIONAL_PAIR),
+    "merge_touching": Call(([((0.25, 0.5), (0.0, 0.25)), ((0.5, 0.75), (0.25, 0.5))],), {"gap": 1e-6}),
 }
