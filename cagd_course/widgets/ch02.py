@@ -55,6 +55,25 @@ __all__ = [
 # ---------------------------------------------------------------- de Casteljau
 
 
+def _fit_view(ax, points, pad: float = 0.12) -> None:
+    """Equal-aspect limits around `points` (k, 2), with a margin of `pad` times their larger extent.
+
+    The margin leaves room for the point labels. The shorter direction is
+    widened to the shape of the axes box, so that matplotlib's equal aspect
+    has nothing left to adjust (it would warn about fixed limits otherwise).
+    """
+    pts = np.asarray(points, dtype=float).reshape(-1, 2)
+    low, high = pts.min(axis=0), pts.max(axis=0)
+    span = high - low + 2 * pad * max(float((high - low).max()), 1e-9)
+    width, height = ax.figure.get_size_inches()
+    box = ax.get_position(original=True)
+    ratio = (box.height * height) / (box.width * width)  # y extent over x extent of the box
+    span = np.maximum(span, [span[1] / ratio, span[0] * ratio])
+    centre = (low + high) / 2
+    ax.set_xlim(centre[0] - span[0] / 2, centre[0] + span[0] / 2)
+    ax.set_ylim(centre[1] - span[1] / 2, centre[1] + span[1] / 2)
+
+
 class DeCasteljauExplorer(Explorer):
     """The de Casteljau triangle at t and the two halves it splits the curve into. Notes §2.3."""
 
@@ -83,8 +102,11 @@ class DeCasteljauExplorer(Explorer):
         if self.extrapolate:
             plot_bezier(ax, self.points, interval=(-0.5, 1.5), color="C0", linestyle=":", linewidth=1)
         plot_de_casteljau(ax, self.points, t, curve=False)
-        ax.plot(*state["left"].T, color="C4", linewidth=3, alpha=0.35)
-        ax.plot(*state["right"].T, color="C5", linewidth=3, alpha=0.35)
+        ax.plot(*state["left"].T, color="C4", linewidth=6, alpha=0.35)
+        ax.plot(*state["right"].T, color="C5", linewidth=6, alpha=0.35)
+        # The view fits the triangle (inside [0, 1]: the control polygon), not the dotted extension,
+        # which would shrink the construction to a corner of the panel.
+        _fit_view(ax, np.vstack(state["levels"]))
         ax.set_title(f"de Casteljau's algorithm at t = {t:.2f}")
 
     def describe(self, state: dict) -> str:
@@ -361,6 +383,7 @@ class SubdivisionExplorer(Explorer):
         for k, polygon in enumerate(state["polygons"]):
             ax.plot(*polygon.T, "o-", color=("C0", "C3")[k % 2], markersize=2.5, linewidth=1)
         count = len(state["polygons"])
+        _fit_view(ax, self.points)  # room above the top control point for its label
         ax.set_title(f"Subdivision depth {state['depth']}: {count} polygon{'s' * (count > 1)}, "
                      f"max vertex distance {state['distance']:.3g}", fontsize=10, pad=14)
         ax.legend(fontsize=8, loc="lower center")

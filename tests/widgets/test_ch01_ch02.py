@@ -87,6 +87,26 @@ def test_de_casteljau_explorer_extrapolates_only_when_asked():
     assert np.allclose(state["left"][-1], state["point"])
 
 
+def _view(explorer):
+    """The drawn limits (x0, x1, y0, y1) after the figure has been rendered (equal aspect applied)."""
+    explorer.png()
+    return (*explorer.ax.get_xlim(), *explorer.ax.get_ylim())
+
+
+def test_de_casteljau_explorer_fits_the_view_to_the_triangle():
+    explorer = widgets.de_casteljau_explorer(CUBIC, extrapolate=True)
+    explorer.update(t=0.5)
+    x0, x1, y0, y1 = _view(explorer)
+    low, high = CUBIC.min(axis=0), CUBIC.max(axis=0)
+    assert x0 < low[0] and high[0] < x1 and y0 < low[1] and high[1] < y1
+    # the dotted extension over [-0.5, 1.5] reaches y = -6; the view stays near the polygon
+    assert (x1 - x0) < 2 * (high - low).max() and (y1 - y0) < 2 * (high - low).max()
+    # extrapolating, the view grows to hold the point P(t) outside the polygon
+    state = explorer.update(t=1.5)
+    x0, x1, y0, y1 = _view(explorer)
+    assert x0 < state["point"][0] < x1 and y0 < state["point"][1] < y1
+
+
 # ---------------------------------------------------------------- control point editor
 
 
@@ -219,6 +239,13 @@ def test_subdivide_all_matches_subdivide_and_the_curve():
     s = np.linspace(0, 1, 5)
     for i, piece in enumerate(pieces):
         assert np.allclose(de_casteljau(piece, s), de_casteljau(CUBIC, (i + s) / 8))
+
+
+def test_subdivision_explorer_leaves_room_above_the_top_control_point():
+    explorer = widgets.subdivision_explorer(CUBIC)
+    explorer.update(depth=1)
+    _, _, _, y1 = _view(explorer)
+    assert y1 >= CUBIC[:, 1].max() + 0.1 * np.ptp(CUBIC, axis=0).max()
 
 
 def test_subdivision_explorer_polygon_count_and_shrinking_distance():
