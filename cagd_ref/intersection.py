@@ -56,6 +56,8 @@ __all__ = [
     "search_steps",
     "curve_piece",
     "intersect_curves",
+    "bezier_clipping",
+    "merge_touching",
 ]
 
 # Fat lines are widened by this much (times the size of the picture) so that
@@ -613,10 +615,12 @@ def fat_line(points) -> tuple[np.ndarray, float, float]:
     >>> line.tolist(), dmin, dmax
     ([0.0, 1.0, 0.0], -2.0, 1.0)
     """
-    pts = _planar(points, min_count=2)
+    pts = as_points(points, min_count=2)
+    if pts.shape[1] != 2:
+        raise ValueError(f"points: expected planar control points of shape (n+1, 2), got shape {pts.shape}")
     if np.array_equal(pts[0], pts[-1]):
         raise ValueError(f"points: P0 = Pn = {pts[0].tolist()}, so there is no line through the two end points")
-    line = normalize_line(join(np.append(pts[0], 1.0), np.append(pts[-1], 1.0)))
+    line = normalize_line(join(np.append(pts[0], 1.0), np.append(pts[-1], 1.0)))  # P0 × Pn, a² + b² = 1
     distances = pts @ line[:2] + line[2]
     return line, float(min(distances.min(), 0.0)), float(max(distances.max(), 0.0))
 
@@ -648,28 +652,12 @@ def perpendicular_fat_line(points) -> tuple[np.ndarray, float, float]:
 
 
 def _hull_band(c: np.ndarray, low: float, high: float) -> tuple[float, float] | None:
-    """The t-extent of hull{(i/n, c_i)} ∩ {low <= d <= high} (either bound may be infinite), or None.
-
-    The extent is reached at a vertex of the intersection: a control point
-    inside the band, or the point where a hull edge crosses a bounding line.
-    Every hull edge joins two control points, so taking all segments between
-    control points that cross a bounding line finds every such crossing, with
-    no need to build the hull.
-    """
-    n = len(c) - 1
-    if n == 0:
-        return (0.0, 1.0) if low <= c[0] <= high else None
-    t = np.arange(n + 1) / n
-    found = [t[(c >= low) & (c <= high)]]
-    for level in (low, high):
-        if np.isfinite(level):
-            s = c - level
-            i, j = np.nonzero((s[:, None] < 0) & (s[None, :] > 0))
-            found.append(t[i] + (t[j] - t[i]) * (s[i] / (s[i] - s[j])))
-    hits = np.concatenate(found)
-    if hits.size == 0:
-        return None
-    return max(float(hits.min()), 0.0), min(float(hits.max()), 1.0)
+    """`clip_range` without its checks, for a band that may be open on one side (low = -inf or high = inf)."""
+    if not np.isfinite(low):  # a line below every control point clips nothing away
+        low = min(c.min(), high) - 1.0
+    if not np.isfinite(high):
+        high = max(c.max(), low) + 1.0
+    return clip_range(c, low, high)
 
 
 def clip_range(coeffs, dmin, dmax) -> tuple[float, float] | None:
@@ -693,7 +681,22 @@ def clip_range(coeffs, dmin, dmax) -> tuple[float, float] | None:
     high = as_scalar(dmax, "dmax")
     if low > high:
         raise ValueError(f"dmin: expected dmin <= dmax, got dmin = {low} > dmax = {high}")
-    return _hull_band(c, low, high)
+    n = len(c) - 1
+    if n == 0:
+        return (0.0, 1.0) if low <= c[0] <= high else None
+    t = np.arange(n + 1) / n
+    # The extreme points of hull ∩ band: control points inside the band, and the points where
+    # a hull edge crosses d = dmin or d = dmax. Every hull edge joins two control points, so the
+    # segments between all pairs that cross a line include them: no need to build the hull.
+    found = [t[(c >= low) & (c <= high)]]
+    for level in (low, high):
+        s = c - level
+        i, j = np.nonzero((s[:, None] < 0) & (s[None, :] > 0))  # P_i below, P_j above
+        found.append(t[i] + (t[j] - t[i]) * (s[i] / (s[i] - s[j])))
+    hits = np.concatenate(found)
+    if hits.size == 0:
+        return None
+    return max(float(hits.min()), 0.0), min(float(hits.max()), 1.0)
 
 
 def clip_curve(points, line, dmin, dmax, weights=None) -> tuple[float, float] | None:
@@ -816,31 +819,30 @@ def clip_one_sided(line, points, weights=None, exact: bool = False) -> tuple[flo
     (0.119760479, 1.0)
     """
     line = as_line(line, "line")
-    h = _homogeneous_columns(points, weights)
-    if np.any(h[:, 2] < 0):
+    pts = as_points(points)
+    if pts.shape[1] != 2:
+        raise ValueError(f"points: expected planar control points of shape (n+1, 2), got shape {pts.shape}")
+    w = np.ones(len(pts)) if weights is None else as_weights(weights, len(pts))
+    if np.any(w < 0):
         raise ValueError("weights: clipping relies on the convex hull property, which needs positive weights")
-    e = h @ line
-    if exact:
-        return _hull_band(e, 0.0, np.inf)
-    return _v_rule(e)
-
-
-def _v_rule(e: np.ndarray) -> tuple[float, float] | None:
+    e = to_homogeneous(pts, w) @ line  # the heights e_i = L · w_i (x_i, y_i, 1)
+    if exact:  # the hull's own crossing: the band 0 <= e <= max e_i is the half-plane e >= 0
+        return clip_range(e, 0.0, max(e.max(), 0.0))
     if np.all(e < 0):
         return None
     if len(e) == 1:
         return (0.0, 1.0)
     low, high = 0.0, 1.0
-    for end in ("left", "right"):
-        if e[0 if end == "left" else -1] >= 0:
-            continue
-        _, _, meets = _explicit_meets(e, end)
-        finite = meets[:, 2] != 0
-        ts = meets[finite, 0] / meets[finite, 2]
-        if end == "left":
-            low = float(ts[ts > 0].min())
-        else:
-            high = float(ts[ts < 1].max())
+    if e[0] < 0:  # the left-most meet V_i of a line E_0 E_i with the axis to the right of E_0
+        _, _, meets = explicit_meets(e, "left")
+        v = meets[meets[:, 2] != 0]  # a line parallel to the axis meets it at infinity
+        v = v[:, 0] / v[:, 2]
+        low = float(v[v > 0].min())
+    if e[-1] < 0:  # the right-most meet of a line E_n E_i with the axis to the left of E_n
+        _, _, meets = explicit_meets(e, "right")
+        v = meets[meets[:, 2] != 0]
+        v = v[:, 0] / v[:, 2]
+        high = float(v[v < 1].max())
     return low, high
 
 
@@ -1240,10 +1242,167 @@ def search_steps(p, q, method: str = "clipping", tol: float = 1e-9) -> list[Sear
     return steps
 
 
+# --- §7.7 the plain Bézier-clipping loop, as chapter 7 states it --------------------------------------
+
+
+def bezier_clipping(p, q, tol=1e-9, p_weights=None, q_weights=None, pad=1e-12,
+                    perpendicular=True, max_rounds=1000, log=None) -> np.ndarray:
+    """All intersections (t, u) of two Bézier curves by plain clipping. Notes §7.7.
+
+    The loop of chapter 7's algorithm box, written to be read (`intersect_curves`
+    runs the same clipping faster and finishes with Newton's method).
+    p: (n+1, 2), q: (m+1, 2); p_weights, q_weights: None or positive weights.
+    A pair of pieces is a pair of parameter ranges. A round clips P against
+    the fat lines of Q's piece (the parallel one and, if `perpendicular`, the
+    perpendicular one, both widened by `pad` times the largest coordinate),
+    then Q against those of P's new piece. A round that keeps more than 80 %
+    of both ranges splits the longer one, unless both pieces are smaller than
+    1e-6 of the largest coordinate (a tangency: recorded). Pairs narrower
+    than tol in t and in u are recorded, and recorded pairs that touch are
+    merged (`merge_touching`). Returns (k, 2), sorted by t, then u. More than
+    `max_rounds` rounds raise a RuntimeError (overlapping curves never end).
+    log: None or a list; it receives (event, t_range, u_range) per event:
+    "clip P", "clip Q", "missed" (a clip kept nothing), "split P", "split Q",
+    "found".
+
+    >>> p = [(2.0, -5.0), (3.0, -1.0), (10.0, 2.0), (4.0, 3.0)]
+    >>> q = [(0.0, 0.0), (2.0, 1.0), (6.0, -2.0), (12.0, 0.0)]
+    >>> np.round(bezier_clipping(p, q), 9).tolist()
+    [[0.429289175, 0.548961333]]
+    """
+    curves = {}
+    for name, points, weights in (("p", p, p_weights), ("q", q, q_weights)):
+        points = as_points(points, name, min_count=2)
+        if points.shape[1] != 2:
+            raise ValueError(f"{name}: expected shape (n+1, 2), got {points.shape}")
+        if weights is not None:
+            weights = as_weights(weights, len(points), f"{name}_weights")
+            if np.any(weights <= 0):
+                raise ValueError(f"{name}_weights: must be positive, got {weights}")
+        curves[name.upper()] = (points, weights)
+    tol = as_tolerance(tol, below_one=True)
+    size = max(np.abs(points).max() for points, _ in curves.values())
+    pad = as_scalar(pad, "pad") * size
+    max_rounds = as_count(max_rounds, "max_rounds", minimum=1)
+    bands = (fat_line, perpendicular_fat_line) if perpendicular else (fat_line,)
+
+    def piece(name, interval):  # control points (and weights) over [0, 1]
+        points, weights = curves[name]
+        return curve_piece(points, interval, weights)
+
+    def fat_lines(points):
+        end = points[-1]
+        if np.array_equal(end, points[0]):  # a closed piece: aim at the farthest point
+            end = points[np.argmax(np.hypot(*(points - points[0]).T))]
+            if np.array_equal(end, points[0]):  # a single point: any direction
+                end = points[0] + (1.0, 0.0)
+        for band in bands:
+            line, _, _ = band([points[0], end])
+            d = points @ line[:2] + line[2]
+            yield line, min(d.min(), 0.0) - pad, max(d.max(), 0.0) + pad
+
+    def clip(name, interval, other):  # the part of interval that may meet `other`
+        points, weights = piece(name, interval)
+        low, high = 0.0, 1.0
+        for line, dmin, dmax in fat_lines(other):
+            kept = clip_curve(points, line, dmin, dmax, weights)
+            if kept is None or kept[0] > high or kept[1] < low:
+                return None
+            low, high = max(low, kept[0]), min(high, kept[1])
+        a, b = interval
+        return (a + (b - a) * low, a + (b - a) * high)
+
+    def tiny(name, interval):
+        return np.ptp(piece(name, interval)[0], axis=0).max() <= 1e-6 * size
+
+    def note(event, t_range, u_range):
+        if log is not None:
+            log.append((event, t_range, u_range))
+
+    found, rounds = [], 0
+    stack = [((0.0, 1.0), (0.0, 1.0))]
+    while stack:
+        t_range, u_range = stack.pop()
+        while True:
+            before = (t_range[1] - t_range[0], u_range[1] - u_range[0])
+            if before[0] <= tol and before[1] <= tol:
+                found.append((t_range, u_range))
+                note("found", t_range, u_range)
+                break
+            rounds += 1
+            if rounds > max_rounds:
+                raise RuntimeError(f"over {max_rounds} rounds: do p and q overlap?")
+            t_range = clip("P", t_range, piece("Q", u_range)[0])
+            note("clip P" if t_range else "missed", t_range, u_range)
+            if t_range is None:
+                break
+            u_range = clip("Q", u_range, piece("P", t_range)[0])
+            note("clip Q" if u_range else "missed", t_range, u_range)
+            if u_range is None:
+                break
+            after = (t_range[1] - t_range[0], u_range[1] - u_range[0])
+            if after[0] > 0.8 * before[0] and after[1] > 0.8 * before[1]:  # 20 % rule
+                if tiny("P", t_range) and tiny("Q", u_range):
+                    found.append((t_range, u_range))
+                    note("found", t_range, u_range)
+                elif after[0] >= after[1]:
+                    middle = (t_range[0] + t_range[1]) / 2
+                    stack.append(((middle, t_range[1]), u_range))
+                    stack.append(((t_range[0], middle), u_range))
+                    note("split P", t_range, u_range)
+                else:
+                    middle = (u_range[0] + u_range[1]) / 2
+                    stack.append((t_range, (middle, u_range[1])))
+                    stack.append((t_range, (u_range[0], middle)))
+                    note("split Q", t_range, u_range)
+                break
+    return merge_touching(found)
+
+
+def merge_touching(boxes, gap=1e-6) -> np.ndarray:
+    """One (t, u) per group of touching parameter boxes, sorted by t, u. Notes §7.7.5.
+
+    boxes: pairs ((t0, t1), (u0, u1)). Two boxes touch when their t ranges and
+    their u ranges both overlap once widened by gap; a group, all that touching
+    links together, is reported at the middle of its t and u extent. So an
+    intersection on a split parameter, found by both halves, comes out once.
+
+    >>> s = 0.5 + 2**-21                        # 4.8e-7 from 0.5: within the gap
+    >>> boxes = [((0.5, 0.5), (0.25, 0.25)), ((s, s), (0.25, 0.25)), ((0.9, 0.9), (0.1, 0.1))]
+    >>> merge_touching(boxes, gap=1e-6).tolist()
+    [[0.5000002384185791, 0.25], [0.9, 0.1]]
+    """
+    groups = []
+    for interval_t, interval_u in boxes:
+        (t0, t1), (u0, u1) = (as_vector(interval_t, "boxes", dim=2),
+                              as_vector(interval_u, "boxes", dim=2))
+        groups.append([float(t0), float(t1), float(u0), float(u1)])
+    gap = as_scalar(gap, "gap")
+
+    def touch(a, b):
+        return (a[0] <= b[1] + gap and b[0] <= a[1] + gap
+                and a[2] <= b[3] + gap and b[2] <= a[3] + gap)
+
+    k = 0
+    while k < len(groups):
+        other = next((g for g in groups[k + 1:] if touch(groups[k], g)), None)
+        if other is None:
+            k += 1
+            continue
+        groups.remove(other)
+        mine = groups[k]
+        groups[k] = [min(mine[0], other[0]), max(mine[1], other[1]),
+                     min(mine[2], other[2]), max(mine[3], other[3])]
+        k = 0  # the larger group may now touch one it did not touch before
+    found = sorted(((t0 + t1) / 2, (u0 + u1) / 2) for t0, t1, u0, u1 in groups)
+    return np.array(found, dtype=float).reshape(-1, 2)
+
+
 # --- the batched search of intersect_curves: every live pair of pieces clipped at once ----------------
 #
-# The plain search above takes one pair of pieces at a time and one NumPy step per clip, which is
-# what the chapter shows and `clip_trace` records. For polynomial curves `intersect_curves` runs it
+# The searches above take one pair of pieces at a time and one NumPy step per clip: `clip_trace`
+# records the stepper `_Search`, and `bezier_clipping` is the same loop written to be read, which
+# chapter 7 shows. For polynomial curves `intersect_curves` runs the clipping
 # on Python floats (`_clipping.search`); for rational curves it runs the same clipping on all live
 # pairs of pieces together, here: the state is only the parameter ranges, (2, K) arrays lo and hi
 # (row 0 for P, row 1 for Q, one column per pair of pieces); each round rebuilds every piece from

@@ -142,7 +142,8 @@ def plot_explicit_clip(ax, values, dmin: float, dmax: float, kept=None, interval
     values: the d_i, (n+1,). The band dmin <= d <= dmax is shaded (an
     infinite dmin or dmax draws a half-plane, for the one-sided clips of
     rational curves); kept = (t_lo, t_hi) on the local [0, 1], or None, is
-    marked on the parameter interval `interval` the explicit curve is drawn over.
+    marked on the parameter interval `interval` the explicit curve is drawn over,
+    its range written in the top margin of the panel (clear of the lines).
     """
     check_axes(ax)
     d = as_vector(values, "values")
@@ -154,7 +155,7 @@ def plot_explicit_clip(ax, values, dmin: float, dmax: float, kept=None, interval
     # A half-plane is shaded to just beyond the points, on its own side of its edge.
     low = dmin if np.isfinite(dmin) else min(bottom, dmax) - room
     high = dmax if np.isfinite(dmax) else max(top, dmin) + room
-    ax.axhspan(low, high, color=BAND_COLOR, alpha=0.16, label=_band_label(dmin, dmax))
+    ax.axhspan(low, high, color=BAND_COLOR, alpha=0.16, label=_band_label(dmin, dmax, label))
     for level in (dmin, dmax):
         if np.isfinite(level):
             ax.axhline(level, color=BAND_COLOR, linestyle="--", linewidth=1.0)
@@ -172,20 +173,22 @@ def plot_explicit_clip(ax, values, dmin: float, dmax: float, kept=None, interval
         ax.axvspan(lo, hi, color=KEPT_COLOR, alpha=0.10)
         for v in (lo, hi):
             ax.axvline(v, color=KEPT_COLOR, linewidth=1.4)
-        ax.annotate(f"kept [{lo:.4g}, {hi:.4g}]", ((lo + hi) / 2, high), xytext=(0, 4), textcoords="offset points",
-                    ha="center", va="bottom", fontsize=8, color=KEPT_COLOR)
+        ax.annotate(f"kept [{lo:.4g}, {hi:.4g}]", ((lo + hi) / 2, 1.0), xycoords=("data", "axes fraction"),
+                    xytext=(0, -3), textcoords="offset points", ha="center", va="top", fontsize=8, color=KEPT_COLOR,
+                    bbox=dict(boxstyle="round,pad=0.15", facecolor="white", edgecolor="none", alpha=0.85))
     ax.set_xlim(t0 - 0.03 * (t1 - t0), t1 + 0.03 * (t1 - t0))
-    ax.set_ylim(min(low, bottom) - room, max(high, top) + 2 * room)
+    # Room at the top for the kept range's label.
+    ax.set_ylim(min(low, bottom) - room, max(high, top) + (3.5 if kept is not None else 2) * room)
     ax.set_xlabel("t")
     ax.set_ylabel(label)
     return ax
 
 
-def _band_label(dmin: float, dmax: float) -> str:
+def _band_label(dmin: float, dmax: float, name: str = "d") -> str:
     if not np.isfinite(dmin):
-        return f"{_number(dmax)} ≥ d"
+        return f"{_number(dmax)} ≥ {name}"
     if not np.isfinite(dmax):
-        return f"d ≥ {_number(dmin)}"
+        return f"{name} ≥ {_number(dmin)}"
     return f"band [{_number(dmin)}, {_number(dmax)}]"
 
 
@@ -193,21 +196,32 @@ def _number(value: float) -> str:
     return f"{value:.4g}"
 
 
-def plot_v_rule(ax, values, end: str = "left", color: str = "C3") -> Axes:
+def plot_v_rule(ax, values, end: str = "left", color: str = "C3", label_meets: str = "all",
+                label_points: bool = True) -> Axes:
     """The V rule: points E_i, the lines from the end point to each E_i and their meets V_i with the axis. Notes §7.7.8.
 
     values: the heights e_i = L · P_i, (n+1,); end "left" (lines E0 Ei) or
     "right" (En Ei). Each line is drawn from its end point to where it meets
-    the axis, V_i is marked and labelled with its parameter.
+    the axis and V_i is marked; label_meets "all" labels every V_i with its
+    parameter, "clip" only the one the rule clips at (the left-most meet right
+    of E0, or the right-most left of En), "none" none; label_points=False
+    leaves the E_i unlabelled.
     """
     check_axes(ax)
+    if label_meets not in ("all", "clip", "none"):
+        raise ValueError(f"label_meets: expected 'all', 'clip' or 'none', got {label_meets!r}")
     points, lines, meets = explicit_meets(values, end)
+    finite = meets[:, 2] != 0
+    vs = meets[finite, 0] / meets[finite, 2]
+    inside = vs[vs > 0] if end == "left" else vs[vs < 1]
+    clip_at = (inside.min() if end == "left" else inside.max()) if len(inside) else None
     anchor = points[0] if end == "left" else points[-1]
     others = range(1, len(points)) if end == "left" else range(len(points) - 1)
     ax.axhline(0.0, color="0.5", linewidth=0.9)
     ax.plot(points[:, 0], points[:, 1], "o", color="k", markersize=5)
-    for i, p in enumerate(points):
-        ax.annotate(f"$E_{{{i}}}$", p[:2], xytext=(4, 4), textcoords="offset points", fontsize=9)
+    if label_points:
+        for i, p in enumerate(points):
+            ax.annotate(f"$E_{{{i}}}$", p[:2], xytext=(4, 4), textcoords="offset points", fontsize=9)
     for k, (i, meet) in enumerate(zip(others, meets)):
         if meet[2] == 0:
             continue  # parallel to the axis: the meet is at infinity
@@ -216,6 +230,8 @@ def plot_v_rule(ax, values, end: str = "left", color: str = "C3") -> Axes:
         span = ends[np.argsort(ends[:, 0])][[0, -1]]
         ax.plot(*span.T, color=color, linewidth=0.9, alpha=0.7)
         ax.plot(v, 0.0, "v", color=color, markersize=6)
+        if label_meets == "none" or (label_meets == "clip" and v != clip_at):
+            continue
         # The labels sit in three staggered rows along the bottom of the panel, joined to their meets by thin
         # leaders: next to the axis they would collide with each other and with the E_i labels.
         # (The leader is an annotation of its own, so that the label's extent is the text alone.)

@@ -95,7 +95,9 @@ class BezoutExplorer(Explorer):
     A line meets a conic 1 · 2 = 2 times and two circles meet 2 · 2 = 4 times,
     counting complex intersections and those at infinity: every circle passes
     through the circular points (1, ±i, 0), so two circles have at most two
-    finite intersections left.
+    finite intersections left. The second circle on top of the first (offset
+    0, radius 1) is the same curve: a common component, which Bézout's theorem
+    excludes, and infinitely many common points.
     """
 
     figsize = (6.2, 5.0)
@@ -111,6 +113,12 @@ class BezoutExplorer(Explorer):
     def compute(self, other: str, offset: float, radius: float) -> dict:
         circle = circle_conic([0.0, 0.0], 1.0)
         at_infinity = []
+        common = other == "circle" and abs(offset) < 1e-12 and abs(radius - 1.0) < 1e-12
+        if common:
+            # The same circle twice: every point is common, and Bézout's count (which assumes no common
+            # component) does not apply.
+            return {"other": other, "offset": offset, "radius": radius, "count": np.inf, "common_component": True,
+                    "finite": [], "real": np.zeros((0, 2)), "at_infinity": []}
         if other == "line":
             # The line y = offset, x = t: substituting gives a quadratic in t.
             g = implicit_polynomial(circle, [0.0, 1.0], [offset])
@@ -129,8 +137,8 @@ class BezoutExplorer(Explorer):
                 g = implicit_polynomial(circle, [c], [0.0, 1.0])
                 points = [(complex(c), complex(y)) for y in np.roots(g[::-1])]
         real = [(p[0].real, p[1].real) for p in points if abs(p[0].imag) < 1e-9 and abs(p[1].imag) < 1e-9]
-        return {"other": other, "offset": offset, "radius": radius, "count": count, "finite": points,
-                "real": np.array(real).reshape(-1, 2), "at_infinity": at_infinity}
+        return {"other": other, "offset": offset, "radius": radius, "count": count, "common_component": False,
+                "finite": points, "real": np.array(real).reshape(-1, 2), "at_infinity": at_infinity}
 
     def draw(self, ax, state: dict) -> None:
         theta = np.linspace(0, 2 * np.pi, 200)
@@ -139,18 +147,27 @@ class BezoutExplorer(Explorer):
             ax.plot([-3.5, 3.5], [state["offset"]] * 2, color=Q_COLOR, linewidth=2)
         else:
             r, c = state["radius"], state["offset"]
-            ax.plot(c + r * np.cos(theta), r * np.sin(theta), color=Q_COLOR, linewidth=2)
+            style = "--" if state["common_component"] else "-"  # dashed: visible on top of the first circle
+            ax.plot(c + r * np.cos(theta), r * np.sin(theta), style, color=Q_COLOR, linewidth=2)
         if len(state["real"]):
             ax.plot(*state["real"].T, "o", color="C3", markersize=8)
         ax.set_xlim(-3.5, 3.5)
         ax.set_ylim(-3.2, 3.2)
         ax.set_aspect("equal", adjustable="box")
         ax.set(xticks=[-3, 0, 3], yticks=[-3, 0, 3])
+        if state["common_component"]:
+            ax.set_title("the same circle twice: a common component,\ninfinitely many common points "
+                         "(Bézout's theorem does not apply)", fontsize=9)
+            return
         finite = len(state["finite"])
         ax.set_title(f"Bézout: {state['count']} intersections = {len(state['real'])} real + "
                      f"{finite - len(state['real'])} complex + {len(state['at_infinity'])} at infinity", fontsize=9)
 
     def describe(self, state: dict) -> str:
+        if state["common_component"]:
+            return (f"{_swatch(P_COLOR)} x² + y² = 1 and {_swatch(Q_COLOR)} the second circle are the same curve: "
+                    "every point is common. Bézout's theorem counts the intersections of curves without a common "
+                    "component; move the offset or the radius to separate them.")
         rows = [f"({_complex(x)}, {_complex(y)})" for x, y in state["finite"]]
         rows += [f"({_complex(X)}, {_complex(Y)}, {W}) at infinity" for X, Y, W in state["at_infinity"]]
         other = "the line" if state["other"] == "line" else "the second circle"
@@ -168,10 +185,12 @@ def _complex(z) -> str:
 def bezout_explorer() -> BezoutExplorer:
     """Dropdown `other` (line or circle), sliders `offset` (the line's height, or the second centre's x) and `radius`.
 
-    `update` returns {"other", "offset", "radius", "count" (Bézout's number),
-    "finite" (the finite intersections as complex pairs), "real" (r, 2),
-    "at_infinity" (the homogeneous points at infinity, the circular points
-    (1, ±i, 0) for two circles)}. Notes §7.1.
+    `update` returns {"other", "offset", "radius", "count" (Bézout's number;
+    inf for the same circle twice), "common_component" (True when the second
+    circle is the first: Bézout's hypothesis fails), "finite" (the finite
+    intersections as complex pairs), "real" (r, 2), "at_infinity" (the
+    homogeneous points at infinity, the circular points (1, ±i, 0) for two
+    circles)}. Notes §7.1.
     """
     return BezoutExplorer()
 
@@ -266,9 +285,9 @@ class ClipLabExplorer(Explorer):
 
         lost = (f"<br>{_swatch('C3')} curve in the band but cut away by the polygon clip: "
                 f"t in [{state['lost'].min():.3f}, {state['lost'].max():.3f}]" if len(state["lost"]) else "")
-        return (f"{_swatch('C2')} exact hull (solid): {show(state['hull'])}<br>"
-                f"{_swatch('C4')} V rule (dotted): {show(state['v_rule'])}<br>"
-                f"{_swatch('C3')} control polygon (dashed): {show(state['polygon'])}{lost}")
+        return (f"{_swatch('C2')} exact hull (green lines and strip): {show(state['hull'])}<br>"
+                f"{_swatch('C4')} V rule (the bar along the bottom): {show(state['v_rule'])}<br>"
+                f"{_swatch('C3')} control polygon (red dashed lines): {show(state['polygon'])}{lost}")
 
 
 def clip_lab_explorer(values=None, dmin: float = -2.0, dmax: float = 1.0) -> ClipLabExplorer:
@@ -416,7 +435,7 @@ def _range(interval) -> str:
 def clipping_explorer(preset: str = "one intersection (Fig. 7.5)") -> ClippingExplorer:
     """Dropdown `preset` (a pair of curves), slider `step` (the clip shown) and a checkbox `perpendicular`. Notes §7.7.
 
-    Every clip of the search that `intersect_curves` runs: the left panel shows
+    Every clip of the Bézier-clipping search that `clip_trace` records: the left panel shows
     both curves, the fat line of the curve that clips (and its perpendicular
     one if ticked), the piece being clipped with its control polygon and what
     is kept; the right panel the explicit curve of the distances with its hull,
