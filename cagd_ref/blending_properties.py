@@ -168,7 +168,7 @@ def _symmetry(values: np.ndarray, mirrored: np.ndarray, ts: np.ndarray, tol: flo
     gap = np.abs(values - mirrored[:, ::-1])
     worst = np.unravel_index(np.argmax(gap), gap.shape)
     if gap[worst] <= tol:
-        return Verdict(True, f"f_i(t) = f_(n-i)(t0 + t1 - t) on the samples (deviation {gap[worst]:.1e})")
+        return Verdict(True, f"f_i(t) = f_(n-i)(tmin + tmax - t) on the samples (deviation {gap[worst]:.1e})")
     i, n = worst[1], values.shape[1] - 1
     return Verdict(False, f"f{i} and the mirrored f{n - i} differ by {gap[worst]:.3g} at t = {ts[worst[0]]:.4g}")
 
@@ -188,8 +188,8 @@ def _endpoint_interpolation(values: np.ndarray, tol: float) -> Verdict:
     start = float(np.abs(values[0] - unit[0]).max())
     end = float(np.abs(values[-1] - unit[-1]).max())
     if max(start, end) <= tol:
-        return Verdict(True, "f(t0) = (1, 0, ..., 0) and f(t1) = (0, ..., 0, 1)")
-    return Verdict(False, f"f(t0) = {np.round(values[0], 4).tolist()}, f(t1) = {np.round(values[-1], 4).tolist()}")
+        return Verdict(True, "f(tmin) = (1, 0, ..., 0) and f(tmax) = (0, ..., 0, 1)")
+    return Verdict(False, f"f(tmin) = {np.round(values[0], 4).tolist()}, f(tmax) = {np.round(values[-1], 4).tolist()}")
 
 
 def _probe_heights(rng: np.random.Generator, count: int, size: int) -> np.ndarray:
@@ -395,8 +395,8 @@ def _exact_symmetry(f, t, t0, t1) -> Verdict:
     mirror = [sp.cancel(f[i] - f[n - i].subs(t, t0 + t1 - t)) for i in range(n + 1)]
     odd = [i for i, d in enumerate(mirror) if d != 0]
     if not odd:
-        return Verdict(True, "f_i(t) = f_(n-i)(t0 + t1 - t) exactly")
-    return Verdict(False, f"f{odd[0]}(t) - f{n - odd[0]}(t0 + t1 - t) = {sp.factor(mirror[odd[0]])}")
+        return Verdict(True, "f_i(t) = f_(n-i)(tmin + tmax - t) exactly")
+    return Verdict(False, f"f{odd[0]}(t) - f{n - odd[0]}(tmin + tmax - t) = {sp.factor(mirror[odd[0]])}")
 
 
 def _exact_independence(f, t) -> Verdict:
@@ -427,7 +427,7 @@ def symbolic_properties(functions, t, domain=(0, 1)) -> dict[str, Verdict]:
     total = sp.cancel(sum(f) - 1)
     unity = Verdict(total == 0, "Σ f_i simplifies to 1" if total == 0 else f"Σ f_i - 1 = {sp.factor(total)}")
     start, end = [e.subs(t, t0) for e in f], [e.subs(t, t1) for e in f]
-    endpoints = Verdict(start == [1] + [0] * n and end == [0] * n + [1], f"f(t0) = {start}, f(t1) = {end}")
+    endpoints = Verdict(start == [1] + [0] * n and end == [0] * n + [1], f"f(tmin) = {start}, f(tmax) = {end}")
     return {
         "coordinate_independence": unity,
         "convex_hull": _exact_hull(f, t, t0, t1, unity),
