@@ -123,7 +123,7 @@ def intersection_cases(plan: Plan) -> list[Case]:
     return cases
 
 
-def _suite_number(value) -> float:
+def suite_number(value) -> float:
     """A number of the suite's files: an integer, a fraction "p/q" or a C99 hex float."""
     if isinstance(value, int):
         return float(value)
@@ -140,9 +140,9 @@ def suite_cases() -> list[tuple[int, np.ndarray, np.ndarray, np.ndarray]]:
     curves = json.loads((SUITE / "curves.json").read_text(encoding="utf-8"))
     found = []
     for entry in json.loads((SUITE / "curve_intersections.json").read_text(encoding="utf-8")):
-        p, q = (np.array([[_suite_number(v) for v in row] for row in curves[entry[key]]["control_points"]]).T
+        p, q = (np.array([[suite_number(v) for v in row] for row in curves[entry[key]]["control_points"]]).T
                 for key in ("curve1", "curve2"))
-        expected = np.array([[_suite_number(v) for v in entry[key]] for key in ("curve1_params", "curve2_params")],
+        expected = np.array([[suite_number(v) for v in entry[key]] for key in ("curve1_params", "curve2_params")],
                             dtype=float).reshape(2, -1).T
         found.append((entry["id"], p, q, expected[np.lexsort((expected[:, 1], expected[:, 0]))]))
     return found

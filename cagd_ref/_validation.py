@@ -94,6 +94,15 @@ def as_weights(weights, count: int, name: str = "weights") -> np.ndarray:
     return array
 
 
+def as_positive_weights(weights, count: int, requirement: str, name: str = "weights") -> np.ndarray:
+    """Weights of shape (count,), all positive; `requirement` is the error's reason, e.g. "offsets need positive
+    weights (no pole on the curve)"."""
+    array = as_weights(weights, count, name)
+    if np.any(array < 0):
+        raise ValueError(f"{name}: {requirement}, got {array.tolist()}")
+    return array
+
+
 def as_interval(interval, name: str = "interval") -> tuple[float, float]:
     """A parameter interval (t0, t1) with t0 < t1."""
     array = as_float_array(interval, name)

@@ -19,6 +19,7 @@ from ._validation import (
     as_interval,
     as_parameter,
     as_points,
+    as_positive_weights,
     as_scalar,
     as_tolerance,
     as_vector,
@@ -627,10 +628,7 @@ def hausdorff_distance(p, q, samples: int = 1001) -> float:
 def _positive_weights(weights, count: int) -> np.ndarray | None:
     if weights is None:
         return None
-    w = as_weights(weights, count)
-    if np.any(w < 0):
-        raise ValueError(f"weights: expected positive weights (a curve that stays finite), got {w.tolist()}")
-    return w
+    return as_positive_weights(weights, count, "expected positive weights (a curve that stays finite)")
 
 
 def _velocity_numerators(pts: np.ndarray, weights) -> np.ndarray:

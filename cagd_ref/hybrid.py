@@ -39,7 +39,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from ._validation import as_count, as_parameter, as_points, as_scalar, as_weights
+from ._validation import as_count, as_parameter, as_points, as_positive_weights, as_scalar
 from .bezier import bernstein_matrix, derivative, elevate, evaluate, hodograph, subdivide, to_homogeneous
 from .polynomials import bernstein_integral, bernstein_multiply
 
@@ -123,10 +123,7 @@ class Area(float):
 
 
 def _positive_weights(weights, count: int) -> np.ndarray:
-    w = as_weights(weights, count)
-    if np.any(w < 0):
-        raise ValueError(f"weights: the hybrid form needs positive weights (no pole on the curve), got {w.tolist()}")
-    return w
+    return as_positive_weights(weights, count, "the hybrid form needs positive weights (no pole on the curve)")
 
 
 def _planar(points, name: str = "points") -> np.ndarray:

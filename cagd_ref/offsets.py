@@ -27,7 +27,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validation import as_interval, as_parameter, as_points, as_scalar, as_vector, as_weights
+from ._validation import as_interval, as_parameter, as_points, as_positive_weights, as_scalar, as_vector
 from .bezier import derivative, elevate, evaluate, from_homogeneous, hodograph, to_homogeneous
 from .polynomials import bernstein_horner, bernstein_multiply, bernstein_to_power, power_to_bernstein
 from .roots import bernstein_roots
@@ -75,10 +75,7 @@ def _planar(points, min_count: int = 2) -> np.ndarray:
 def _positive_weights(weights, count: int) -> np.ndarray | None:
     if weights is None:
         return None
-    w = as_weights(weights, count)
-    if np.any(w < 0):
-        raise ValueError(f"weights: offsets need positive weights (no pole on the curve), got {w.tolist()}")
-    return w
+    return as_positive_weights(weights, count, "offsets need positive weights (no pole on the curve)")
 
 
 def _curve(points, weights) -> tuple[np.ndarray, np.ndarray | None]:

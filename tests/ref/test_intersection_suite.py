@@ -24,6 +24,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from benchmarks.intersection import suite_number
 from cagd_ref.intersection import intersect_curves
 
 DATA = Path(__file__).parent / "data" / "bezier"
@@ -43,24 +44,14 @@ TRIPLE_CONTACTS = (42, 45)  # tangent with equal curvature: the tangency system 
 TOLERANCES = (1e-9, 1e-12, 1e-14, 1e-15)
 
 
-def number(value) -> float:
-    """A number of the suite's files: an integer, a fraction "p/q" or a C99 hex float."""
-    if isinstance(value, int):
-        return float(value)
-    if value.lstrip("-").startswith("0x"):
-        return float.fromhex(value)
-    numerator, denominator = value.split("/")
-    return int(numerator) / int(denominator)
-
-
 def load_cases() -> list[dict]:
     curves = json.loads((DATA / "curves.json").read_text(encoding="utf-8"))
     found = []
     for entry in json.loads((DATA / "curve_intersections.json").read_text(encoding="utf-8")):
-        p, q = (np.array([[number(v) for v in row] for row in curves[entry[key]]["control_points"]]).T
+        p, q = (np.array([[suite_number(v) for v in row] for row in curves[entry[key]]["control_points"]]).T
                 for key in ("curve1", "curve2"))
-        s = [number(v) for v in entry["curve1_params"]]
-        t = [number(v) for v in entry["curve2_params"]]
+        s = [suite_number(v) for v in entry["curve1_params"]]
+        t = [suite_number(v) for v in entry["curve2_params"]]
         order = np.argsort(s, kind="stable")
         expected = np.array([s, t], dtype=float).reshape(2, -1)[:, order].T  # (k, 2), sorted by the first
         found.append({"id": entry["id"], "type": entry["type"], "p": p, "q": q, "expected": expected})
