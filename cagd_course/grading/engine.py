@@ -205,7 +205,10 @@ def _judge(prepared: Prepared, index: int, event: dict | None, stopped: str, com
     if "missing" in event:
         return CaseResult(passed=False, message=str(event["missing"]), kind="missing", **base)
     received = _received(event)
-    problem = compare(expected, received)
+    try:
+        problem = compare(expected, received)
+    except Exception as err:  # noqa: BLE001 - a suite that cannot read an answer fails that case, not the run
+        problem = Mismatch(f"the answer could not be compared ({type(err).__name__}: {err})"[:300], "type")
     if problem is None:
         problem = _mutation(prepared.exercise, case, prepared.encoded[index]["args"], event)
     kind = getattr(problem, "kind", "value") if problem else ""

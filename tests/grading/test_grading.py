@@ -205,6 +205,20 @@ def test_modifying_an_input_in_place_fails_the_case():
     assert result.cases[0].kind == "mutation" and "copy" in failure_hint(result, result.cases[0])
 
 
+def test_a_comparison_that_cannot_read_an_answer_fails_the_case_not_the_run():
+    def fragile(expected, received):
+        return None if received == [1.0] else f"got {tuple(received)}"  # breaks on a number
+
+    exercises = {
+        "02.bernstein": (
+            Exercise("02.bernstein", lambda: [1.0], lambda rng: [Case("one", ())], compare=fragile),
+            1.0,
+        )
+    }
+    result = _grade("def bernstein():\n    return 2.0\n", exercises).exercises[0]
+    assert result.score == 0 and "could not be compared" in result.cases[0].message
+
+
 def test_bad_input_cases_demand_a_value_or_type_error():
     compare = close()
     assert compare(Raises("ValueError", "x"), Raises("TypeError", "y")) is None

@@ -69,7 +69,7 @@ def range_or_none(tolerance: float = 1e-9):
     def compare(expected, received) -> str | None:
         if expected is None:
             return None if received is None else f"expected None (the hull misses the band), got {received!r}"[:200]
-        if received is None:
+        if received is None and not isinstance(expected, Raises):
             return f"expected the range {tuple(round(v, 10) for v in expected)}, got None"
         return numbers(tuple(expected) if not isinstance(expected, Raises) else expected,
                        tuple(received) if isinstance(received, (list, tuple, np.ndarray)) else received)
