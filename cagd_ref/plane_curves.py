@@ -9,10 +9,10 @@ array of ascending power coefficients, as in `numpy.polynomial`.
 The chapter asks four questions of such a curve:
 
 - **which points are singular, and of what kind.** Put the point at the
-  origin and split f into homogeneous parts g_0 + g_1 + g_2 + ...; the
+  origin and split f into homogeneous parts f̂_0 + f̂_1 + f̂_2 + ...; the
   multiplicity is the index of the first part that is not zero, and that part
   factors into the tangent lines there (the tangent cone). For a double point
-  g_2 = A a² + B ab + C b² gives a crunode, a cusp or an acnode by the sign of
+  f̂_2 = A a² + B ab + C b² gives a crunode, a cusp or an acnode by the sign of
   B² - 4AC;
 - **where two curves meet.** The resultant in y, a polynomial in x, has the
   x-coordinates of the intersections as roots; the GCD of f(x_k, y) and
@@ -79,6 +79,9 @@ ZERO_TOL = 1e-9
 ROOT_MERGE = 1e-7
 # A root whose imaginary part is below this (relative) is real: double roots split into near-real pairs.
 IMAG_TOL = 1e-7
+# The same for the roots of a resultant in x. Two points on one vertical line make a double root there, which
+# rounding splits into a pair about sqrt(rounding) off the axis; candidates that are no points fail the residual test.
+RESULTANT_IMAG_TOL = 1e-5
 # An intersection point must make both polynomials this small relative to their sizes at that point.
 RESIDUAL_TOL = 1e-8
 # A singular value below this fraction of the largest one counts as zero (conic through five points).
@@ -232,7 +235,7 @@ def translate_implicit(c, dx, dy) -> np.ndarray:
 
 
 def homogeneous_parts(c) -> list[np.ndarray]:
-    """The homogeneous parts g_0, ..., g_n of f: g_k (k+1,) holds γ_j, the coefficient of x^(k-j) y^j. Notes §19.2.
+    """The homogeneous parts f_0, ..., f_n of f: f_k (k+1,) holds γ_j, the coefficient of x^(k-j) y^j. Notes §19.2.
 
     >>> [g.tolist() for g in homogeneous_parts([[0.0, 0.0, 3.0], [0.0, 1.0, -2.0], [0.0, 0.0, 0.0], [1.0, 0.0, 0.0]])]
     [[0.0], [0.0, 0.0], [0.0, 1.0, 3.0], [1.0, 0.0, -2.0, 0.0]]
@@ -264,9 +267,9 @@ def _local(c, point, tol) -> tuple[list[np.ndarray], int, float]:
 def multiplicity(c, point, tol: float = ZERO_TOL) -> int:
     """The multiplicity of `point` (2,) on f = 0: 0 off the curve, 1 at a simple point, 2 at a double point... §19.2.
 
-    The curve is moved so that the point is the origin; the line x = a s,
-    y = b s then meets it in Σ s^k g_k(a, b), and the multiplicity is the
-    smallest k whose part g_k is not zero: every coefficient of the parts
+    The curve is moved so that the point is the origin; the line x = a u,
+    y = b u then meets it in Σ u^k f̂_k(a, b), and the multiplicity is the
+    smallest k whose part f̂_k is not zero: every coefficient of the parts
     below it is at most tol times the largest coefficient of the moved
     polynomial.
 
@@ -277,7 +280,7 @@ def multiplicity(c, point, tol: float = ZERO_TOL) -> int:
 
 
 def tangent_cone(c, point, tol: float = ZERO_TOL) -> np.ndarray:
-    """The lowest nonzero homogeneous part g_r at `point`, (r+1,): γ_j the coefficient of a^(r-j) b^j. Notes §19.2.
+    """The lowest nonzero homogeneous part f̂_r at `point`, (r+1,): γ_j the coefficient of a^(r-j) b^j. Notes §19.2.
 
     Its linear factors b_k a - a_k b are the tangent lines at the point,
     directions (a_k, b_k): along them the line meets the curve r+1 times or
@@ -295,8 +298,8 @@ def tangent_cone(c, point, tol: float = ZERO_TOL) -> np.ndarray:
 def tangent_directions(c, point, tol: float = ZERO_TOL) -> np.ndarray:
     """Unit directions (k, 2) of the real tangent lines at `point`, one per distinct line (k = 0 at an acnode). §19.2.
 
-    The real roots of the tangent cone: b/a = m for the roots m of g_r(1, m),
-    and the vertical direction (0, 1) when g_r has fewer than r roots that way.
+    The real roots of the tangent cone: b/a = m for the roots m of f̂_r(1, m),
+    and the vertical direction (0, 1) when f̂_r has fewer than r roots that way.
     Each direction has a >= 0; they are sorted by a, then b.
 
     >>> tangent_directions([[0, 0, 3], [0, 1, -2], [0, 0, 0], [1, 0, 0]], (0, 0)).round(6).tolist()
@@ -333,8 +336,8 @@ def _merged(values: np.ndarray) -> np.ndarray:
 def classify_double_point(c, point, tol: float = ZERO_TOL) -> str:
     """'crunode', 'cusp' or 'acnode': the kind of the double point `point` (2,) of f = 0, from its tangent cone. §19.2.
 
-    c: c[i, j] of xⁱ yʲ. Moved to the origin, f = g_2 + g_3 + ... with
-    g_2 = A a² + B ab + C b² (`tangent_cone`). D = B² - 4AC > 0: two real
+    c: c[i, j] of xⁱ yʲ. Moved to the origin, f̂ = f̂_2 + f̂_3 + ... with
+    f̂_2 = A a² + B ab + C b² (`tangent_cone`). D = B² - 4AC > 0: two real
     tangents, a **crunode** (the curve crosses itself); D = 0: one double
     tangent, a **cusp**; D < 0: two complex tangents, an **acnode** (an
     isolated real point). Zero tests are relative: a part is zero when its
@@ -351,16 +354,19 @@ def classify_double_point(c, point, tol: float = ZERO_TOL) -> str:
     >>> classify_double_point([[0, 0, -3], [0, 0, 0], [-3, 0, 0], [1, 0, 0]], (0, 0))     # x³ - 3x² - 3y²
     'acnode'
     """
-    parts, r, _ = _local(c, point, tol)
     tol = as_tolerance(tol, below_one=True)
+    x0, y0 = as_vector(point, "point", dim=2)
+    parts = homogeneous_parts(translate_implicit(c, x0, y0))  # f̂_0, f̂_1, f̂_2, ... at the point
+    scale = max(np.abs(part).max() for part in parts)  # the largest coefficient of f̂
+    r = next((k for k, part in enumerate(parts) if np.abs(part).max() > tol * scale), len(parts))
     if r != 2:
         what = {0: "not on the curve", 1: "a simple point of the curve"}.get(r, f"a point of multiplicity {r}")
         raise ValueError(f"point: {what}, not a double point")
-    a, b, cc = parts[2]
-    d = b * b - 4 * a * cc
-    if abs(d) <= tol * (b * b + 4 * abs(a * cc)):
+    A, B, C = parts[2]  # f̂_2(a, b) = A a² + B ab + C b²
+    D = B * B - 4 * A * C
+    if abs(D) <= tol * (B * B + 4 * abs(A * C)):
         return "cusp"
-    return "crunode" if d > 0 else "acnode"
+    return "crunode" if D > 0 else "acnode"
 
 
 # --- §19.3-19.4 resultants and discriminants -------------------------------------------------------------------
@@ -370,11 +376,12 @@ def discriminant(coeffs) -> float:
     """Res(p, p'), the resultant of a polynomial and its derivative: zero exactly when p has a repeated root. §19.4.
 
     coeffs: ascending power coefficients (n+1,), trailing zeros dropped, degree
-    n >= 1. The resultant is Sylvester's determinant (`algebra.resultant`). For
-    the quadratic a t² + b t + c it is a (4ac - b²): the notes' a²(b² - 4ac) has the
-    wrong power of a and the wrong sign. SymPy's `discriminant` is this number
-    times (-1)^(n(n-1)/2) / a_n, which is b² - 4ac for the quadratic.
-    Notes §19.4.
+    n >= 1. The resultant is Sylvester's determinant (`algebra.resultant`), so
+    for the quadratic a t² + b t + c it is a (4ac - b²). Two other conventions
+    vanish for the same p: the determinant of the Bézout matrix of p and p'
+    (`algebra.bezout_matrix`, the notes' a²(b² - 4ac)) is (-1)^(n(n-1)/2) a_n
+    times this number, and SymPy's `discriminant` is (-1)^(n(n-1)/2) / a_n
+    times it, b² - 4ac for the quadratic. Notes §19.4.
 
     >>> discriminant([-5.0, 3.0, 2.0])             # 2t² + 3t - 5: a (4ac - b²) = 2 (-40 - 9)
     -98.0
@@ -474,7 +481,10 @@ def curve_discriminant(c, eliminate: str = "y") -> np.ndarray:
     Seen along y, the curve's outline, its silhouette, turns back where the
     tangent is vertical, and branches cross at its singular points: both are
     where f(x, ·) has a repeated root. Ascending coefficients; ordinary double
-    points give double roots.
+    points give double roots. Not every real root is such a point: the
+    repeated root may be a complex y, or the leading coefficient of f in y may
+    vanish there (a vertical asymptote, as x = 0 for xy - 1, whose
+    discriminant is x).
 
     >>> f = [[-21, 25, -9, 1], [46, -23, 3, 0], [-13, 3, 0, 0], [1, 0, 0, 0]]       # the cubic of §19.5
     >>> curve_discriminant(f).round(9).tolist()                  # (x - 2)² (27x² - 68x - 8): a double root at x = 2
@@ -494,7 +504,7 @@ def _real_roots(r: np.ndarray) -> np.ndarray:
     if len(r) < 2:
         return np.zeros(0)
     roots = P.polyroots(r)
-    real = np.abs(roots.imag) <= IMAG_TOL * np.maximum(1.0, np.abs(roots))
+    real = np.abs(roots.imag) <= RESULTANT_IMAG_TOL * np.maximum(1.0, np.abs(roots))
     values = _merged(np.sort(roots[real].real))
     # Polish each root by a few Newton steps on r (simple roots gain digits; multiple ones do not move far).
     dr = P.polyder(r)
@@ -642,29 +652,25 @@ def parametrize_by_pencil(c, point, tol: float = ZERO_TOL) -> np.ndarray:
     >>> parametrize_by_pencil(f, (2, 3)).round(9).tolist()     # x = (2t³ - t)/(t+1)³, y = (-3t³ + 2t² + 7t + 3)/(t+1)³
     [[0.0, -1.0, 0.0, 2.0], [3.0, 7.0, 2.0, -3.0], [1.0, 3.0, 3.0, 1.0]]
     """
-    a = _implicit(c)
-    p = _point(point)
     tol = as_tolerance(tol, below_one=True)
-    n = _degree(a)
+    x0, y0 = as_vector(point, "point", dim=2)
+    n = implicit_degree(c)
     if n < 2:
         raise ValueError("c: a line (degree 1) needs no pencil; give a curve of degree 2 or more")
-    moved = _transform(a, np.eye(2), p)
-    scale = float(np.abs(moved).max())
-    parts = _parts(moved)
-    r = next((k for k, g in enumerate(parts) if np.abs(g).max() > tol * scale), len(parts))
+    parts = homogeneous_parts(translate_implicit(c, x0, y0))  # f̂_0, ..., f̂_n at the point
+    scale = max(np.abs(part).max() for part in parts)
+    r = next((k for k, part in enumerate(parts) if np.abs(part).max() > tol * scale), len(parts))
     if r != n - 1:
         if r == n:
             raise ValueError(f"point: it has multiplicity {n} on a curve of degree {n}, so the curve is {n} lines "
                              "through it, not one curve to parametrize")
         what = "not on the curve" if r == 0 else f"of multiplicity {r}"
         raise ValueError(f"point: it is {what}, but the pencil needs a point of multiplicity n - 1 = {n - 1}")
-    low, top = parts[n - 1], parts[n]  # γ_j multiplies x^(k-j) y^j, so g_k(1, t) = Σ γ_j t^j
-    w = top.copy()
-    low_t = np.zeros(n + 1)
-    low_t[:n] = low
-    shifted = np.zeros(n + 1)
-    shifted[1:] = low
-    return np.array([p[0] * w - low_t, p[1] * w - shifted, w]) + 0.0
+    # f̂_k(1, t) = Σ_j γ_j t^j when f̂_k(a, b) = Σ_j γ_j a^(k-j) b^j: the parts are already ascending in t.
+    W = parts[n]  # f̂_n(1, t)
+    low = np.append(parts[n - 1], 0.0)  # f̂_(n-1)(1, t), padded to n + 1 coefficients
+    t_low = np.insert(parts[n - 1], 0, 0.0)  # t f̂_(n-1)(1, t)
+    return np.array([x0 * W - low, y0 * W - t_low, W]) + 0.0
 
 
 def _rows(xyw) -> np.ndarray:
@@ -738,15 +744,15 @@ def conic_through_points(points) -> np.ndarray:
     matrix = np.column_stack([x * x, x * y, y * y, x, y, np.ones(5)])
     norms = np.linalg.norm(matrix, axis=0)
     norms[norms == 0] = 1.0
-    _, singular, vt = np.linalg.svd(matrix / norms)
-    if singular[-1] <= RANK_TOL * singular[0]:
+    singular, vt = np.linalg.svd(matrix / norms)[1:]
+    if singular[-1] <= RANK_TOL * singular[0]:  # RANK_TOL = 1e-9: the null space is not one line
         raise ValueError("points: they do not fix one conic (two coincide, or four lie on one line)")
     v = vt[-1] / norms
     c = np.zeros((3, 3))
     c[2, 0], c[1, 1], c[0, 2], c[1, 0], c[0, 1], c[0, 0] = v
     big = c.flat[np.argmax(np.abs(c))]
     c = c / big
-    c[np.abs(c) <= 1e-15] = 0.0
+    c[np.abs(c) <= 1e-15] = 0.0  # rounding noise of exact zeros
     return c + 0.0
 
 

@@ -18,7 +18,8 @@ from ._style import check_axes
 from .algebraic import plot_implicit
 from .pencils import plot_line, set_box
 
-__all__ = ["plot_curve", "plot_tangent_cone", "plot_pencil_ray", "plot_parametrization", "plot_discriminant"]
+__all__ = ["plot_curve", "plot_tangent_cone", "plot_pencil_ray", "plot_parametrization", "plot_discriminant",
+           "fill_equal"]
 
 SINGULAR_STYLE = {"color": "C3", "marker": "o", "markersize": 7, "linestyle": "none", "zorder": 6}
 
@@ -75,22 +76,67 @@ def plot_parametrization(ax, xyw, interval=(-4.0, 4.0), samples: int = 600, **st
     return ax
 
 
-def plot_discriminant(ax, discriminant, xlim, roots=(), **style) -> Axes:
-    """The graph of D(x) (ascending coefficients) over xlim, scaled to its largest value there, its real roots marked.
+def plot_discriminant(ax, discriminant, xlim, roots=(), scale: str = "linear", **style) -> Axes:
+    """The graph of D(x) (ascending coefficients) over xlim with its real roots marked. Notes §19.4.
 
-    Notes §19.4: the roots are the x of vertical tangents and of singular points.
+    The roots are the x of vertical tangents and of singular points (and of
+    vertical asymptotes, or of a repeated complex y). scale="linear" draws
+    D / max |D| over xlim; scale="symlog" draws D itself on a symmetric
+    logarithmic axis (linear within 10⁻⁵ max |D| of zero), where a simple root
+    is a crossing and a double root a touch, however large D is elsewhere.
     """
     check_axes(ax)
     d = as_float_array(discriminant, "discriminant")
     x0, x1 = as_interval(xlim, "xlim")
-    xs = np.linspace(x0, x1, 500)
+    if scale not in ("linear", "symlog"):
+        raise ValueError(f"scale: expected 'linear' or 'symlog', got {scale!r}")
+    xs = np.linspace(x0, x1, 800)
     values = P.polyval(xs, d)
-    scale = np.abs(values).max() or 1.0
+    size = np.abs(values).max() or 1.0
     ax.axhline(0.0, color="0.6", linewidth=0.8)
-    ax.plot(xs, values / scale, **{"color": "C4", "linewidth": 2.0, "label": "D(x) / max |D|", **style})
+    if scale == "linear":
+        ax.set_yscale("linear")
+        ax.plot(xs, values / size, **{"color": "C4", "linewidth": 2.0, "label": "D(x) / max |D|", **style})
+    else:
+        threshold = 1e-5 * size
+        ax.set_yscale("symlog", linthresh=threshold)
+        ax.plot(xs, values, **{"color": "C4", "linewidth": 2.0, "label": "D(x), symmetric log scale", **style})
+        high = int(np.ceil(np.log10(size)))
+        middle = (high + int(np.ceil(np.log10(threshold)))) // 2
+        ax.set_ylim(-(10.0**high), 10.0**high)
+        ticks = [-(10.0**high), -(10.0**middle), 0.0, 10.0**middle, 10.0**high]
+        ax.set_yticks(ticks, [f"$-10^{{{high}}}$", f"$-10^{{{middle}}}$", "0", f"$10^{{{middle}}}$",
+                              f"$10^{{{high}}}$"])
+        ax.minorticks_off()
     roots = np.asarray(roots, dtype=float)
     roots = roots[(roots >= x0) & (roots <= x1)]
     ax.plot(roots, np.zeros_like(roots), "o", color="C3", markersize=6)
     ax.set_xlim(x0, x1)
     ax.set_xlabel("x")
     return ax
+
+
+def fill_equal(ax, xlim, ylim) -> tuple[tuple[float, float], tuple[float, float]]:
+    """Equal aspect without reshaping the axes box: widen the shorter side of the box xlim × ylim about its centre.
+
+    A panel drawn under this one with the same x limits then lines up with it
+    column for column (an equal aspect that reshaped the box would make the
+    upper panel narrower than the lower). The axes must have their final
+    position (a fixed layout, not a constrained one). Returns the limits set.
+    """
+    check_axes(ax)
+    x0, x1 = as_interval(xlim, "xlim")
+    y0, y1 = as_interval(ylim, "ylim")
+    box = ax.get_position()
+    width, height = ax.figure.get_size_inches()
+    ratio = (box.height * height) / (box.width * width)  # height over width of the box, in inches
+    if (y1 - y0) < ratio * (x1 - x0):
+        grow = (ratio * (x1 - x0) - (y1 - y0)) / 2
+        y0, y1 = y0 - grow, y1 + grow
+    else:
+        grow = ((y1 - y0) / ratio - (x1 - x0)) / 2
+        x0, x1 = x0 - grow, x1 + grow
+    ax.set_xlim(x0, x1)
+    ax.set_ylim(y0, y1)
+    ax.set_aspect("equal", adjustable="datalim")
+    return (x0, x1), (y0, y1)

@@ -23,6 +23,7 @@ from cagd_ref import plane_curves
 from ..plotting.pencils import set_box
 from ..plotting.singular_points import (
     SINGULAR_STYLE,
+    fill_equal,
     plot_curve,
     plot_discriminant,
     plot_parametrization,
@@ -124,6 +125,10 @@ CURVES = {
                                                 ((-3.0, 7.0), (-2.0, 8.0))),
     "cubic with coefficients 1…7 (§19.5)": (np.array([[0, 0, 7, 4], [0, 6, 3, 0], [5, 2, 0, 0], [1, 0, 0, 0]],
                                                       dtype=float), (0.0, 0.0), ((-6.0, 3.0), (-4.0, 4.0))),
+    "cusp x³ − 3y² (Fig. 19.3)": (np.array([[0, 0, -3], [0, 0, 0], [0, 0, 0], [1, 0, 0]], dtype=float),
+                                  (0.0, 0.0), ((-1.5, 6.0), (-5.0, 5.0))),
+    "acnode x³ − 3x² − 3y² (Fig. 19.4)": (np.array([[0, 0, -3], [0, 0, 0], [-3, 0, 0], [1, 0, 0]], dtype=float),
+                                          (0.0, 0.0), ((-1.5, 9.0), (-8.0, 8.0))),
 }
 
 
@@ -170,10 +175,32 @@ class PencilParametrizationExplorer(Explorer):
 
         where = "at infinity" if state["xy"] is None else f"{_fmt(state['xy'])}, f there {state['residual']:.1e}"
         return "<br>".join([
-            f"{_equation(state['c'])}, singular point {_fmt(state['point'])}",
+            f"{_equation(state['c'])}; the lines turn about {_fmt(state['point'])}",
             f"x = ({text(x)}) / ({text(w)}),  y = ({text(y)}) / ({text(w)})",
             f"t = {state['t']:.2f}: the point {where}",
+            f"the curve passes through that point at {_through(state['xyw'], state['point'])}",
         ])
+
+
+def _through(xyw: np.ndarray, point: np.ndarray) -> str:
+    """The t at which the parametrization passes through its singular point: the roots of f̂_(n-1)(1, t)."""
+    low = point[0] * xyw[2] - xyw[0]  # f̂_(n-1)(1, t), padded
+    nonzero = np.flatnonzero(np.abs(low) > 1e-12 * np.abs(xyw).max())
+    if nonzero.size == 0 or nonzero[-1] == 0:
+        return "t = ∞ only (the vertical line)"
+    roots = np.polynomial.polynomial.polyroots(low[: nonzero[-1] + 1])
+    texts = []
+    for r in roots:
+        if abs(r.imag) <= 1e-9 * max(1.0, abs(r)):
+            text = f"{r.real:.3g}"
+        else:
+            text = f"{r.real:.3g} {'+' if r.imag > 0 else '−'} {abs(r.imag):.3g}i".replace("0 − ", "−").replace(
+                "0 + ", "")
+        texts.append(text)
+    texts = [f"{text} (twice)" if texts.count(text) > 1 else text for text in dict.fromkeys(texts)]
+    extra = ", and t = ∞" if nonzero[-1] < len(low) - 2 else ""
+    return "t = " + ", ".join(texts) + extra + (" (complex: an isolated point)" if any(
+        abs(r.imag) > 1e-9 * max(1.0, abs(r)) for r in roots) else "")
 
 
 def pencil_parametrization_explorer(curve: str = "circle x² − 2x + y² (Fig. 19.6)",
@@ -191,28 +218,45 @@ def pencil_parametrization_explorer(curve: str = "circle x² − 2x + y² (Fig. 
 
 
 SILHOUETTES = {
+    # name: (the curve, the point it turns about, the box of the whole view, its double point or None, the half
+    # width of the zoom about the double point). The boxes have the aspect of the upper panel (fill_equal).
     "cubic of §19.5": (np.array([[-21, 25, -9, 1], [46, -23, 3, 0], [-13, 3, 0, 0], [1, 0, 0, 0]], dtype=float),
-                       (2.0, 3.0), ((-3.0, 7.0), (-2.0, 8.0))),
+                       (2.0, 3.0), ((-3.0, 7.0), (-0.6, 6.6)), (2.0, 3.0), 0.75),
     "crunode x³ + 9x² − 12y² (Fig. 19.2)": (np.array([[0, 0, -12], [0, 0, 0], [9, 0, 0], [1, 0, 0]], dtype=float),
-                                            (-4.0, 0.0), ((-12.0, 4.0), (-8.0, 8.0))),
+                                            (-4.0, 0.0), ((-13.0, 5.0), (-6.5, 6.5)), (0.0, 0.0), 5.0),
     "circle of Fig. 19.5": (np.array([[-4, -15, 6], [-2, 0, 0], [6, 0, 0]], dtype=float), (1 / 6, 1.25),
-                            ((-2.0, 2.4), (-1.0, 3.5))),
+                            ((-2.0, 2.4), (-0.3, 2.8)), None, None),
 }
+VIEWS = ("whole curve", "zoom on the double point")
 
 
 class SilhouetteExplorer(TwoPanels, Explorer):
-    """A curve turned about a point, with vertical lines at the real roots of its discriminant D(x). Notes §19.4."""
+    """A curve turned about a point, with vertical lines at the real roots of its discriminant D(x). Notes §19.4.
 
-    def __init__(self, curve: str = "cubic of §19.5", angle: float = 0.0):
+    The two panels share their x axis column for column: the upper one keeps its equal aspect by widening its y
+    range (`fill_equal`), never by narrowing its box. The whole view draws D on a symmetric log scale, the zoom on
+    a linear one.
+    """
+
+    figsize = (6.2, 6.6)
+
+    def __init__(self, curve: str = "cubic of §19.5", angle: float = 0.0, view: str = "whole curve"):
         controls = {
             "angle": _slider(widgets.FloatSlider, "turn (°)", value=angle, min=-90.0, max=90.0, step=2.0,
                              readout_format=".0f"),
             "curve": widgets.Dropdown(description="curve", options=list(SILHOUETTES), value=curve),
+            "view": widgets.Dropdown(description="view", options=list(VIEWS), value=view),
         }
         super().__init__(controls)
 
-    def compute(self, angle: float, curve: str) -> dict:
-        base, centre, box = SILHOUETTES[curve]
+    def lower_axes(self):
+        if getattr(self, "lower", None) is None:
+            self.ax.set_position([0.1, 0.38, 0.86, 0.54])
+            self.lower = self.figure.add_axes([0.1, 0.07, 0.86, 0.22])
+        return self.lower
+
+    def compute(self, angle: float, curve: str, view: str) -> dict:
+        base, centre, box, double_point, half = SILHOUETTES[curve]
         phi = np.radians(angle)
         inverse = np.array([[np.cos(phi), np.sin(phi)], [-np.sin(phi), np.cos(phi)]])
         centre = np.asarray(centre)
@@ -220,38 +264,52 @@ class SilhouetteExplorer(TwoPanels, Explorer):
         d = plane_curves.curve_discriminant(c)
         roots = P.polyroots(d) if len(d) > 1 else np.zeros(0)
         real = np.sort(roots[np.abs(roots.imag) <= 1e-6 * (1 + np.abs(roots))].real)
-        return {"curve": curve, "angle": float(angle), "c": c, "discriminant": d, "roots": real, "box": box}
+        point = None
+        if double_point is not None:  # where the turn takes it: p -> centre + R (p - centre)
+            point = centre + inverse.T @ (np.asarray(double_point) - centre)
+        zoom = view == VIEWS[1] and point is not None
+        if zoom:
+            box = ((point[0] - half, point[0] + half), (point[1] - half, point[1] + half))
+        return {"curve": curve, "angle": float(angle), "view": view, "c": c, "discriminant": d, "roots": real,
+                "double_point": point, "zoom": zoom, "box": box}
 
     def draw(self, ax, state: dict) -> None:
-        box = state["box"]
-        plot_curve(ax, state["c"], *box, label="f(x, y) = 0")
-        for x in state["roots"]:
-            if box[0][0] <= x <= box[0][1]:
-                ax.axvline(x, color="C3", linewidth=0.9, linestyle="--")
-        set_box(ax, *box)
+        lower = self.lower_axes()  # first: the upper panel's box is final before its limits are fitted to it
+        xlim, ylim = fill_equal(ax, *state["box"])
+        plot_curve(ax, state["c"], xlim, ylim, resolution=480 if state["zoom"] else 360, label="f(x, y) = 0")
+        ax.set_xlim(*xlim)
+        ax.set_ylim(*ylim)
+        ax.set_aspect("equal", adjustable="datalim")
+        shown = [x for x in state["roots"] if xlim[0] <= x <= xlim[1]]
+        for x in shown:
+            ax.axvline(x, color="C3", linewidth=0.9, linestyle="--")
+        if state["double_point"] is not None:
+            ax.plot(*state["double_point"], **SINGULAR_STYLE)
         ax.legend(fontsize=8, loc="upper left")
         ax.set_title("vertical tangents and crossings are roots of Res_y(f, f_y)", fontsize=10)
         bare_axes(ax)
-        lower = self.lower_axes()
-        plot_discriminant(lower, state["discriminant"], box[0], state["roots"])
-        for x in state["roots"]:
-            if box[0][0] <= x <= box[0][1]:
-                lower.axvline(x, color="C3", linewidth=0.9, linestyle="--")
-        lower.legend(fontsize=8, loc="upper left")
-        lower.set_yticks([])
+        plot_discriminant(lower, state["discriminant"], xlim, state["roots"], scale="symlog")
+        for x in shown:
+            lower.axvline(x, color="C3", linewidth=0.9, linestyle="--")
+        lower.set_ylabel("Res_y(f, f_y)", fontsize=8)  # the readout names the scale
+        lower.tick_params(labelsize=8)
 
     def describe(self, state: dict) -> str:
         roots = ", ".join(f"{x:.4g}" for x in state["roots"]) or "none"
         return "<br>".join([
             f"D(x) = Res_y(f, ∂f/∂y) has degree {len(state['discriminant']) - 1}; real roots x = {roots}",
             "a simple root: a vertical tangent; a double root: a double point (or two vertical tangents over one x)",
+            "lower panel: D on a symmetric log scale (linear near 0), where a simple root is a crossing and a "
+            "double root a touch",
         ])
 
 
-def silhouette_explorer(curve: str = "cubic of §19.5", angle: float = 0.0) -> SilhouetteExplorer:
-    """Slider `angle` (the curve turned about a point, degrees) and dropdown `curve`: D(x) under the curve. §19.4.
+def silhouette_explorer(curve: str = "cubic of §19.5", angle: float = 0.0,
+                        view: str = "whole curve") -> SilhouetteExplorer:
+    """Slider `angle` (the curve turned about a point, degrees), dropdowns `curve` and `view`: D(x) under the curve.
 
-    `update` returns {"curve", "angle", "c" the turned curve, "discriminant" D (ascending in x),
-    "roots" its real roots, "box"}.
+    `update` returns {"curve", "angle", "view", "c" the turned curve, "discriminant" D (ascending in x),
+    "roots" its real roots, "double_point" where the turn took it (None for a curve without one), "zoom" whether
+    the view is the zoom about it, "box"}. Notes §19.4.
     """
-    return SilhouetteExplorer(curve, angle)
+    return SilhouetteExplorer(curve, angle, view)

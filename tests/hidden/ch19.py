@@ -3,7 +3,7 @@
 Fixed cases come from cagd_course/examples/ch19.toml: the notes' double points
 (Figures 19.2-19.4 and the cubic of §19.2), the circle and hyperbola of
 Figure 19.5 (recovered from their printed points), the quadratic
-discriminant (corrected), the pencil parametrizations of Figures 19.6-19.7 and
+discriminant (in Sylvester's convention), the pencil parametrizations of Figures 19.6-19.7 and
 of the cubic with its double point at (2, 3), and the course's conics. Edge
 cases: tangencies, points sharing an x, curves without y, rotated and moved
 curves (rounding in every coefficient), degree-1 polynomials, conics through
@@ -353,7 +353,8 @@ EXERCISES = [
         cases=discriminant_cases,
         compare=close(1e-8, 1e-8),
         hint="Build the Sylvester matrix of p (degree n) and p' (degree n-1), size 2n-1, after dropping trailing "
-        "zeros; its determinant is Res(p, p'). For a t² + b t + c it is a (4ac - b²), not b² - 4ac.",
+        "zeros; its determinant is Res(p, p'). For a t² + b t + c it is a (4ac - b²): not b² - 4ac (SymPy's "
+        "normalised discriminant) and not a²(b² - 4ac) (the notes' Bézout determinant).",
         rules={EDGE: "Trailing zeros do not count", BAD: "Raise a ValueError if the degree is below 1"},
     ),
     Exercise(

@@ -237,14 +237,31 @@ def test_random_intersections_satisfy_both_equations_and_match_sympy(seed):
 # --- §19.4 discriminants ---------------------------------------------------------------------------------------------
 
 
-def test_the_quadratic_discriminant_correction():
+def test_the_quadratic_discriminant_in_three_conventions():
     example = notes_example("19.quadratic_discriminant")
-    assert pc.discriminant(example.inputs["coeffs"]) == pytest.approx(example.results["resultant"])
+    coeffs = example.inputs["coeffs"]
+    assert pc.discriminant(coeffs) == pytest.approx(example.results["resultant"])  # Sylvester: -98
+    bezout = algebra.bezout_matrix(coeffs, P.polyder(coeffs))
+    assert np.linalg.det(bezout) == pytest.approx(example.results["bezout_determinant"])  # the notes': 196
+    p = sum(int(v) * T**k for k, v in enumerate(coeffs))
+    assert sp.discriminant(p, T) == example.results["normalised"]  # b² - 4ac = 49
     a, b, c = sp.symbols("a b c")
     exact = sp.resultant(a * T**2 + b * T + c, 2 * a * T + b, T)
     assert sp.factor(exact) == sp.factor(a * (4 * a * c - b**2))
-    assert sp.factor(exact - a**2 * (b**2 - 4 * a * c)) != 0  # the notes' value is not it
-    assert example.errata["resultant"].correct == "a(4ac - b²)"
+    # The notes' a²(b² - 4ac) is the Bézout determinant: det B = (-1)^(n(n-1)/2) a_n^(n-m) Res with n = 2, m = 1.
+    matrix = sp.Matrix([[2 * a**2, a * b], [a * b, b**2 - 2 * a * c]])  # (17.8) for p and p' = 0 t² + 2a t + b
+    assert sp.expand(matrix.det() - a**2 * (b**2 - 4 * a * c)) == 0
+    assert sp.expand(matrix.det() - (-1) * a * exact) == 0
+
+
+@pytest.mark.parametrize("n", range(1, 8))
+def test_bezout_determinant_of_p_and_its_derivative(n):
+    rng = np.random.default_rng(n)
+    coeffs = rng.integers(-5, 6, n + 1).astype(float)
+    coeffs[-1] = coeffs[-1] or 2.0
+    bezout = np.linalg.det(algebra.bezout_matrix(coeffs, P.polyder(coeffs)))
+    expected = (-1) ** (n * (n - 1) // 2) * coeffs[-1] * pc.discriminant(coeffs)
+    assert bezout == pytest.approx(expected, rel=1e-9, abs=1e-9)
 
 
 @pytest.mark.parametrize("seed", range(5))
@@ -398,3 +415,70 @@ def test_the_circle_through_three_points():
         assert np.linalg.norm(p - centre) == pytest.approx(radius)
     with pytest.raises(ValueError, match="^p1, p2, p3"):
         pc.circle_through_points((0, 0), (1, 1), (2, 2))
+
+
+# --- the course's examples of chapter 19: δ, caveats of resultants, adjoint curves --------------------------------
+
+
+def test_the_smooth_cubic_meets_a_line_through_one_of_its_points_twice_more_by_a_square_root():
+    example = notes_example("19.smooth_cubic")
+    c = example.inputs["c"]
+    assert pc.singular_points(c).shape == (0, 2) and pc.genus(3) == example.results["genus"]
+    assert len(sp.factor_list(poly(c))[1]) == 1  # irreducible, yet an oval and a branch
+    along = sp.factor(poly(c).subs(Y, T * X))  # on the line y = t x
+    assert along == sp.factor(-X * (X**2 - T**2 * X - 1))
+    assert sp.sqrt(T**4 + 4).is_Pow  # no polynomial square root: the two points are not rational in t
+
+
+def test_the_tacnode_counts_twice_in_the_genus():
+    example = notes_example("19.tacnode_quartic")
+    c = example.inputs["c"]
+    rows = example.inputs["parametrization"]
+    xt, yt, wt = (sum(sp.Integer(int(v)) * T**k for k, v in enumerate(row)) for row in rows)
+    assert sp.expand(sp.resultant(sp.expand(X * wt - xt), sp.expand(Y * wt - yt), T)) == poly(c)  # rational
+    assert np.allclose(pc.tangent_cone(c, (0, 0)), example.results["tangent_cone"])
+    assert pc.classify_double_point(c, (0, 0)) == "cusp"  # one double tangent: the test cannot tell a tacnode
+    # At infinity: (X, Y, W) -> with Y = 1 the curve is x⁴ - 4x² - w², an acnode.
+    assert pc.classify_double_point([[0, 0, -1], [0, 0, 0], [-4, 0, 0], [0, 0, 0], [1, 0, 0]], (0, 0)) == "acnode"
+    assert pc.singular_points(c).tolist() == [[0.0, 0.0]]  # no other finite singular point
+    tacnode, acnode = example.results["deltas"]
+    assert (4 - 1) * (4 - 2) // 2 - tacnode - acnode == example.results["genus"] == 0
+
+
+def test_real_roots_of_a_resultant_without_real_points():
+    circles = notes_example("19.disjoint_circles")
+    f, h = circles.args("f", "h")
+    assert np.allclose(pc.curve_resultant(f, h), circles.results["y_resultant"])  # (6x - 9)²
+    assert pc.implicit_intersections(f, h).shape == (0, 2)
+    assert sp.solve([poly(f), poly(h)], [X, Y], dict=True) == [
+        {X: sp.Rational(3, 2), Y: -sp.sqrt(5) * sp.I / 2}, {X: sp.Rational(3, 2), Y: sp.sqrt(5) * sp.I / 2}]
+    asymptote = notes_example("19.asymptote")
+    assert np.allclose(pc.curve_discriminant(asymptote.inputs["c"]), asymptote.results["discriminant"])  # x
+
+
+def test_the_adjoint_conics_parametrize_the_quartic_with_three_double_points():
+    example = notes_example("19.adjoint_quartic")
+    c = example.inputs["c"]
+    f = poly(c)
+    assert np.allclose(pc.singular_points(c), example.inputs["double_points"][[2, 1, 0]])
+    conics = [poly(example.results[name]) for name in ("conic_a", "conic_b")]
+    for px, py in [(2, 0), (1, sp.sqrt(2)), (1, -sp.sqrt(2)), (0, 0)]:
+        assert all(q.subs({X: px, Y: py}) == 0 for q in conics)
+    pencil = conics[0] - 2 * T * conics[1]
+    assert sp.factor(sp.resultant(f, pencil, Y)) == sp.sympify(example.results["resultant_factors"], {"x": X, "t": T})
+    xt = sum(int(v) * T**k for k, v in enumerate(example.results["x"]))
+    yt = sum(int(v) * T**k for k, v in enumerate(example.results["y"]))
+    assert sp.expand(f.subs({X: xt, Y: yt}, simultaneous=True)) == 0
+    assert sp.expand(pencil.subs({X: xt, Y: yt}, simultaneous=True)) == 0
+    for ts, point in zip(example.results["double_point_parameters"], example.inputs["double_points"][:2]):
+        for value in ts:
+            assert np.allclose([P.polyval(value, example.results["x"]), P.polyval(value, example.results["y"])], point)
+
+
+def test_the_functions_the_chapter_shows_read_without_private_helpers():
+    import inspect
+    import re
+
+    for function in (pc.classify_double_point, pc.parametrize_by_pencil, pc.conic_through_points):
+        body = re.sub(r"#.*", "", inspect.getsource(function).split('"""')[-1])  # the code, without comments
+        assert not re.search(r"(?<![\w.])_[a-z]\w*\(", body), function.__name__

@@ -67,6 +67,61 @@ def test_the_silhouette_roots_are_vertical_tangents_and_the_double_point():
     assert set(SILHOUETTES) == set(explorer.controls["curve"].options)
 
 
+@pytest.mark.parametrize("curve", list(SILHOUETTES))
+@pytest.mark.parametrize("view", ["whole curve", "zoom on the double point"])
+def test_the_silhouette_panels_share_their_x_axis_pixel_for_pixel(curve, view):
+    explorer = widgets.silhouette_explorer(curve, angle=24.0, view=view)
+    upper, lower = explorer.ax, explorer.lower
+    explorer.figure.canvas.draw()
+    xs = np.linspace(*upper.get_xlim(), 7)
+    columns = [ax.transData.transform(np.column_stack([xs, np.zeros_like(xs) + ax.get_ylim()[0]]))[:, 0]
+               for ax in (upper, lower)]
+    assert np.allclose(*columns, atol=0.5)  # the dashed line at a root stands at one pixel column in both panels
+    assert upper.get_xlim() == pytest.approx(lower.get_xlim())
+    assert upper.get_position().x0 == pytest.approx(lower.get_position().x0)
+    assert upper.get_position().width == pytest.approx(lower.get_position().width)
+
+
+def test_the_zoom_follows_the_turned_double_point():
+    explorer = widgets.silhouette_explorer("crunode x³ + 9x² − 12y² (Fig. 19.2)", angle=40.0,
+                                           view="zoom on the double point")
+    state = explorer.state
+    assert state["zoom"]
+    assert abs(P.polyval2d(*state["double_point"], state["c"])) < 1e-9  # still on the turned curve
+    (x0, x1), (y0, y1) = state["box"]
+    assert x0 < state["double_point"][0] < x1 and y0 < state["double_point"][1] < y1
+    circle = explorer.update(curve="circle of Fig. 19.5")
+    assert circle["double_point"] is None and not circle["zoom"]  # nothing to zoom on: the whole circle
+
+
+def test_the_discriminant_panel_is_on_a_symmetric_log_scale():
+    explorer = widgets.silhouette_explorer()
+    assert explorer.lower.get_yscale() == "symlog"
+    ax = Figure().add_subplot()
+    figures.plot_discriminant(ax, notes_example("19.silhouette").results["discriminant"], (-3, 7), scale="linear")
+    assert ax.get_yscale() == "linear"
+    with pytest.raises(ValueError, match="^scale"):
+        figures.plot_discriminant(ax, [1.0, 2.0], (0, 1), scale="log")
+
+
+def test_fill_equal_keeps_the_box_and_widens_one_side():
+    fig = Figure(figsize=(6.0, 3.0))
+    ax = fig.add_axes([0.1, 0.1, 0.8, 0.8])
+    (x0, x1), (y0, y1) = figures.fill_equal(ax, (0.0, 2.0), (0.0, 2.0))  # a wide box: x grows
+    assert (y0, y1) == (0.0, 2.0) and x1 - x0 == pytest.approx(4.0) and (x0 + x1) / 2 == pytest.approx(1.0)
+    (x0, x1), (y0, y1) = figures.fill_equal(ax, (0.0, 10.0), (0.0, 1.0))  # a flat box: y grows
+    assert (x0, x1) == (0.0, 10.0) and y1 - y0 == pytest.approx(5.0)
+
+
+@pytest.mark.parametrize("name, through", [("cusp x³ − 3y² (Fig. 19.3)", "0 (twice)"),
+                                           ("acnode x³ − 3x² − 3y² (Fig. 19.4)", "−1i, 1i")])
+def test_the_pencil_explorer_shows_where_cusp_and_acnode_are_reached(name, through):
+    explorer = widgets.pencil_parametrization_explorer(name, t=0.5)
+    example = notes_example("19.cusp" if "cusp" in name else "19.acnode")
+    assert np.allclose(explorer.state["xyw"], example.results["pencil"])
+    assert through in explorer.readout.value
+
+
 def test_figures_check_their_axes_and_break_at_poles():
     ax = Figure().add_subplot()
     figures.plot_parametrization(ax, notes_example("19.cubic_pencil").results["pencil"], (-3, 3))
