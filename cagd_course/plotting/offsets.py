@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 from matplotlib import colormaps
 from matplotlib.axes import Axes
-from matplotlib.patches import Circle
+from matplotlib.patches import Circle, ConnectionPatch, Rectangle
 
 from cagd_ref import bezier, offsets
 from cagd_ref._validation import as_count, as_scalar
@@ -29,6 +29,8 @@ __all__ = [
     "draw_cusp_condition",
     "plot_cusp_condition",
     "plot_osculating_circle",
+    "plot_evolute",
+    "zoom_into",
 ]
 
 OFFSET_STYLE = {"color": "C3", "linewidth": 1.8}
@@ -74,14 +76,15 @@ def draw_offset(ax, curve, factor, cusp_points=None, legend: str | None = "offse
     backward[1:] |= factor[:-1] < 0
     backward[:-1] |= factor[1:] < 0
     ax.plot(*forward.T, **{**OFFSET_STYLE, "label": legend, **style})
+    layer = {"zorder": style["zorder"]} if "zorder" in style else {}  # the backward arcs and cusps on the same layer
 
     def entry(text):
         return text if legend and text not in shown else None
 
     if np.any(factor < 0):
-        ax.plot(*np.where(backward[:, None], curve, np.nan).T, **BACKWARD_STYLE, label=entry(BACKWARD_LABEL))
+        ax.plot(*np.where(backward[:, None], curve, np.nan).T, **BACKWARD_STYLE, **layer, label=entry(BACKWARD_LABEL))
     if cusp_points is not None and len(cusp_points):
-        ax.plot(*np.asarray(cusp_points).T, **CUSP_STYLE, label=entry("cusps"))
+        ax.plot(*np.asarray(cusp_points).T, **CUSP_STYLE, **layer, label=entry("cusps"))
     return finish_planar(ax)
 
 
@@ -148,3 +151,50 @@ def plot_osculating_circle(ax, points, t, weights=None, **style) -> Axes:
     ax.update_datalim([centre - 1 / abs(kappa), centre + 1 / abs(kappa)])
     ax.autoscale_view()
     return ax
+
+
+def plot_evolute(ax, points, t_range=(0.0, 1.0), weights=None, samples: int = 400, **style) -> Axes:
+    """Draw the evolute, the curve of the centres of curvature Q - N/κ, over `t_range`: every cusp lies on it. Notes §8.
+
+    Parameters where the curve hardly bends (the centre far away, |κ| below
+    1e-6 of its largest value) are left out, so an inflection breaks the line.
+    """
+    check_axes(ax)
+    pts = planar_points(points)
+    t0, t1 = (as_scalar(v, "t_range") for v in t_range)
+    samples = as_count(samples, "samples", minimum=2)
+    ts = np.linspace(t0, t1, samples)
+    kappa = bezier.signed_curvature(pts, ts, weights)
+    bends = np.abs(kappa) > 1e-6 * np.abs(kappa).max(initial=0.0)
+    centres = np.full((samples, 2), np.nan)
+    if np.any(bends):
+        centres[bends] = offsets.centre_of_curvature(pts, ts[bends], weights)
+    ax.plot(*centres.T, **{"color": "C2", "linestyle": ":", "linewidth": 1.5, "label": "evolute (centres of curvature)",
+                           **style})
+    return ax
+
+
+def zoom_into(ax, zoom, limits, **style) -> Axes:
+    """Frame the region `limits` = ((x0, x1), (y0, y1)) on `ax` and show it, enlarged, in the Axes `zoom`.
+
+    Draws the frame on `ax`, sets the limits of `zoom` (equal aspect: the panel
+    shrinks to the frame's proportions) and joins the frame's corners to the
+    zoom's nearest corners; returns `zoom`.
+    """
+    check_axes(ax)
+    check_axes(zoom)
+    (x0, x1), (y0, y1) = limits
+    frame = {"edgecolor": "0.35", "linewidth": 1.0, **style}
+    ax.add_patch(Rectangle((x0, y0), x1 - x0, y1 - y0, fill=False, **frame))
+    zoom.set(xlim=(x0, x1), ylim=(y0, y1))
+    zoom.set_aspect("equal", adjustable="box")
+    for spine in zoom.spines.values():
+        spine.set_edgecolor(frame["edgecolor"])
+    # Join the two corners of the frame that face the zoom panel to the zoom panel's matching corners.
+    right = zoom.get_position().x0 > ax.get_position().x1 - 1e-9
+    corners = [(x1, y0), (x1, y1)] if right else [(x0, y0), (x1, y0)]
+    targets = [(0, 0), (0, 1)] if right else [(0, 1), (1, 1)]
+    for corner, target in zip(corners, targets):
+        zoom.add_artist(ConnectionPatch(xyA=corner, coordsA=ax.transData, xyB=target, coordsB=zoom.transAxes,
+                                        color=frame["edgecolor"], linewidth=0.8))
+    return zoom

@@ -5,7 +5,8 @@ its backward-running arc between the cusps, the circle of the tightest bend on
 the offset's side, and the graph of 1 + ρκ(t) whose zeros are the cusps. The PH
 lab builds a Pythagorean-hodograph cubic from u and v and lays its exact
 rational offset over the sampled Q + ρN. The gouging explorer runs a cutting
-tool of radius |ρ| along the offset and shows where it cuts into the curve.
+tool of radius |ρ| along the offset, shows where it cuts into the curve, and
+the trimmed tool path that keeps its distance everywhere.
 """
 
 from __future__ import annotations
@@ -228,8 +229,8 @@ class GougingExplorer(Explorer):
 
     figsize = (6.5, 5.0)
 
-    def __init__(self, points=None, rho: float = 1.8, t: float = 0.45):
-        self.curves, curve = _curve_choice(points, "convex arch")
+    def __init__(self, points=None, rho: float = -0.8, t: float = 0.45):
+        self.curves, curve = _curve_choice(points, "parabola y = x²")
         controls = {
             "curve": curve,
             "rho": _slider(widgets.FloatSlider, "ρ", value=rho, **RADIUS),
@@ -253,6 +254,10 @@ class GougingExplorer(Explorer):
         cusps = offsets.offset_cusps(points, rho)
         tool = offsets.offset_point(points, t, rho)
         kind = "none" if not gouged.any() else ("local" if cusps.size else "global")
+        # The tool path a CAM system keeps: the stretches of the offset at distance |ρ| from all of the curve.
+        trimmed = offsets.trim_offset(points, rho) if rho != 0 else np.array([[0.0, 1.0]])
+        kept_paths = [offsets.offset_point(points, np.linspace(a, b, max(int(SAMPLES * (b - a)), 2)), rho)
+                      for a, b in trimmed]
         return {
             "curve": curve,
             "points": points,
@@ -270,20 +275,26 @@ class GougingExplorer(Explorer):
             "cut": float(max(abs(rho) - np.linalg.norm(base - tool, axis=1).min(), 0.0)),
             "factor": float(1 + rho * bezier.signed_curvature(points, t)),
             "kind": kind,
+            "trimmed": trimmed,
+            "kept_paths": kept_paths,
         }
 
     def draw(self, ax, state: dict) -> None:
         rho, base = state["rho"], state["base"]
-        # The gouged stretches go under the curve, which stays visible on top of them.
+        # The gouged stretches are a band under the curve, which stays on top and visible.
         cut = np.where(state["gouged"][:, None], base, np.nan)
-        ax.plot(*cut.T, color="C1", linewidth=6, alpha=0.6, label="gouged")
-        ax.plot(*base.T, color="black", linewidth=1.8, label="curve to cut")
-        draw_offset(ax, state["path"], state["path_factor"], legend="tool centre's path")
-        ax.plot(*state["reverse"].T, color="C2", linestyle=(0, (2, 2)), linewidth=1.3, label="path offset back by -ρ")
+        ax.plot(*cut.T, color="C1", linewidth=7, alpha=0.45, solid_capstyle="butt", zorder=2, label="gouged")
+        for k, path in enumerate(state["kept_paths"]):
+            ax.plot(*path.T, color="C2", linewidth=5, alpha=0.45, zorder=2,
+                    label="trimmed tool path" if k == 0 else None)
+        ax.plot(*base.T, color="black", linewidth=2, zorder=4, label="curve to cut")
+        draw_offset(ax, state["path"], state["path_factor"], legend="tool centre's path (raw offset)",
+                    linewidth=1.2, zorder=3)
         if rho != 0:
-            ax.add_patch(Circle(tuple(state["tool"]), abs(rho), color="C0", alpha=0.2))
-            ax.add_patch(Circle(tuple(state["tool"]), abs(rho), fill=False, color="C0", linewidth=1.2))
-        ax.plot(*np.array([state["tool"], state["contact"]]).T, "o-", color="C0", markersize=4, linewidth=1)
+            ax.add_patch(Circle(tuple(state["tool"]), abs(rho), color="C0", alpha=0.12, zorder=1))
+            ax.add_patch(Circle(tuple(state["tool"]), abs(rho), fill=False, color="C0", linewidth=1.2, zorder=3))
+        ax.plot(*np.array([state["tool"], state["contact"]]).T, "o-", color="C0", markersize=4, linewidth=1,
+                zorder=5)
         titles = {"none": "no gouging", "local": "gouging: the tool is larger than a bend",
                   "global": "gouging: the tool reaches another part of the curve"}
         ax.set_title(f"tool radius {abs(rho):.2f}: {titles[state['kind']]}", fontsize=10)
@@ -300,10 +311,12 @@ class GougingExplorer(Explorer):
             lines.append("1 + ρκ > 0 everywhere, yet the tool cuts: the curve comes back within ρ of itself")
         lines.append(f"at t = {state['t']:.2f}: 1 + ρκ = {state['factor']:.3f}, this position cuts {state['cut']:.3g} "
                      f"deep; tool centre {_fmt(state['tool'])}")
+        kept = ", ".join(f"[{a:.3f}, {b:.3f}]" for a, b in state["trimmed"]) or "none"
+        lines.append(f"trimmed path keeps t in {kept}")
         return "<br>".join(lines)
 
 
-def gouging_explorer(points=None, rho: float = 1.8, t: float = 0.45) -> GougingExplorer:
+def gouging_explorer(points=None, rho: float = -0.8, t: float = 0.45) -> GougingExplorer:
     """Dropdown `curve`, sliders `rho` (the tool's radius and side) and `t` (where the tool is). Notes §8.
 
     The tool's centre follows the offset at ρ; a point of the curve is gouged
@@ -313,7 +326,9 @@ def gouging_explorer(points=None, rho: float = 1.8, t: float = 0.45) -> GougingE
     curve again, except on the backward arc), "gouged" (400,) bool, "depth"
     (deepest gouge), "cusps", "tool" (2,) centre at t, "contact" Q(t), "cut"
     (how deep the tool at t cuts), "factor" (1 + ρκ(t)), "kind" ("none",
-    "local": the tool exceeds a bend, "global": it reaches a distant part)}.
+    "local": the tool exceeds a bend, "global": it reaches a distant part),
+    "trimmed" (k, 2) parameter intervals of the path kept by trimming
+    (`offsets.trim_offset`), "kept_paths" (their points, one array each)}.
     """
     return GougingExplorer(points, rho, t)
 

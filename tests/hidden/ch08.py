@@ -93,6 +93,7 @@ def _offset_cases(rng):
         Case(BAD, ([(0.0, 0.0, 0.0), (1.0, 1.0, 1.0)], 0.5, 1.0)),  # offsets are planar
         Case(BAD, ([(1.0, 2.0)], 0.5, 1.0)),  # a single point
         Case(BAD, (STOPS_AT_START, [0.0, 0.5], 1.0)),  # Q'(0) = 0: no normal
+        Case(BAD, (STOPS_AT_START, [0.0, 0.5], 1.0, [1.0, 2.0, 0.5, 1.0])),  # rational: Q'(0) = 0 too
         Case(BAD, (ARCH_POINTS, 0.5, 1.0, [1.0, 0.0, 1.0, 1.0])),  # a zero weight
         Case(BAD, (ARCH_POINTS, 0.5, 1.0, [1.0, -2.0, 1.0, 1.0])),  # a negative weight
         Case(BAD, (ARCH_POINTS, 0.5, 1.0, [1.0, 1.0, 1.0])),  # one weight per point

@@ -18,6 +18,7 @@ from scipy.optimize import brentq, minimize_scalar
 from cagd_course.examples import notes_example
 from cagd_ref import bezier
 from cagd_ref import offsets as o
+from cagd_ref.bspline import de_boor
 from cagd_ref.polynomials import bernstein_horner, bernstein_multiply, bernstein_to_power
 
 ARCH = notes_example("08.arch")
@@ -406,3 +407,144 @@ def test_the_parabola_offset_matches_the_offset_of_the_parabola(rho, interval):
     parabola = [(t0, t0**2), ((t0 + t1) / 2, t0 * t1), (t1, t1**2)]  # (t, t²) as a quadratic Bézier curve
     np.testing.assert_allclose(bezier.evaluate(points, s, weights), o.offset_point(parabola, (t - t0) / (t1 - t0), rho),
                                atol=1e-12)
+
+
+# --- the evolute, distances, trimming ---------------------------------------------------------------
+
+POCKET = [(-1.5, 2.25), (0.0, -2.25), (1.5, 2.25)]  # y = x² for -1.5 <= x <= 1.5, turning left (inside: ρ < 0)
+HOOK = [(0.0, 0.0), (6.0, 0.0), (4.0, 5.0), (1.0, 0.8)]  # curls back towards its start
+
+
+def test_the_centre_of_curvature_holds_every_cusp():
+    assert o.centre_of_curvature(ARCH.inputs["points"], 0.5) == pytest.approx([2.0, 1.5 - ARCH.results["min_radius"]])
+    for seed in range(6):
+        points, weights = random_curve(seed, rational=seed % 2 == 1)
+        low, high = o.cusp_free_interval(points, weights)
+        rho = 1.3 * (high if np.isfinite(high) else low)
+        cusps = o.offset_cusps(points, rho, weights)
+        np.testing.assert_allclose(o.offset_point(points, cusps, rho, weights),
+                                   o.centre_of_curvature(points, cusps, weights), atol=1e-9)
+    with pytest.raises(ValueError, match="^t: the curve does not bend"):
+        o.centre_of_curvature(INFLECTION.inputs["points"], 0.5)  # κ = 0 at the inflection
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_the_distance_to_a_curve_agrees_with_a_dense_search(seed):
+    points, weights = random_curve(seed, rational=seed % 2 == 1)
+    rng = np.random.default_rng(seed)
+    queries = rng.uniform(-6, 6, (5, 2))
+    dense = bezier.evaluate(points, np.linspace(0, 1, 20001), weights)
+    for query, found in zip(queries, o.distance_to_curve(points, queries, weights)):
+        gaps = np.linalg.norm(dense - query, axis=1)
+        k = int(np.argmin(gaps))
+        best = minimize_scalar(lambda t, q=query: np.linalg.norm(bezier.evaluate(points, t, weights) - q),
+                               bounds=(max(k - 2, 0) / 20000, min(k + 2, 20000) / 20000), method="bounded",
+                               options={"xatol": 1e-13})
+        assert found == pytest.approx(min(best.fun, gaps.min()), abs=1e-9)
+        assert found <= gaps.min() + 1e-12
+
+
+def test_points_of_a_cusp_free_convex_offset_are_at_distance_rho_and_the_error_measures_the_gap():
+    arch = ARCH.inputs["points"]
+    offset = o.offset_point(arch, TS, -0.5)  # outside the arch: every foot point is its own
+    np.testing.assert_allclose(o.distance_to_curve(arch, offset), 0.5, atol=1e-12)
+    assert np.abs(o.offset_error(arch, -0.5, offset, TS)).max() < 1e-12
+    moved = offset + 0.01 * o.offset_normal(arch, TS)  # 0.01 back towards the curve
+    np.testing.assert_allclose(o.offset_error(arch, -0.5, moved, TS), 0.01, atol=1e-12)
+    assert o.offset_error(arch, 0.3, (2.0, 1.25), 0.5) == pytest.approx(0.05)
+    with pytest.raises(ValueError, match="^t: expected one parameter per point"):
+        o.offset_error(arch, 0.3, offset[:3], TS[:2])
+
+
+def test_trimming_cuts_the_swallowtail_at_its_crossing():
+    kept = o.trim_offset(POCKET, -0.8)
+    assert kept.shape == (2, 2) and kept[0, 0] == 0.0 and kept[1, 1] == 1.0
+    inner = o.offset_point(POCKET, [kept[0, 1], kept[1, 0]], -0.8)
+    np.testing.assert_allclose(inner[0], inner[1], atol=1e-8)  # both pieces end at the crossing ...
+    assert inner[0][0] == pytest.approx(0.0, abs=1e-8)  # ... on the axis of the parabola
+    cusps = o.offset_cusps(POCKET, -0.8)
+    assert kept[0, 1] < cusps[0] and cusps[1] < kept[1, 0]  # the backward arc is gone with the loop
+
+
+@pytest.mark.parametrize("points, rho", [(POCKET, -0.8), (HOOK, -0.5), (HOOK, -0.8),
+                                         (INFLECTION.inputs["points"], 0.6)])
+def test_what_trimming_keeps_is_at_distance_rho_and_what_it_drops_is_closer(points, rho):
+    kept = o.trim_offset(points, rho)
+    ts = np.linspace(0, 1, 1201)
+    inside = np.any((ts[:, None] >= kept[:, 0]) & (ts[:, None] <= kept[:, 1]), axis=1)
+    margin = np.min(np.abs(ts[:, None] - kept.ravel()[None, :]), axis=1) > 1e-6  # clear of the cut points
+    distance = o.distance_to_curve(points, o.offset_point(points, ts, rho))
+    assert np.all(distance[inside] >= abs(rho) * (1 - 1e-9))
+    assert np.all(distance[~inside & margin] < abs(rho))
+
+
+def test_the_convex_side_and_rho_zero_keep_everything():
+    assert o.trim_offset(ARCH.inputs["points"], -0.5).tolist() == [[0.0, 1.0]]
+    assert o.trim_offset(ARCH.inputs["points"], 0.0).tolist() == [[0.0, 1.0]]
+    assert o.trim_offset(ARCH.inputs["points"], 2.5).shape == (0, 2)  # a tool of radius 2.5 fits nowhere in the arch
+
+
+# --- approximation within a tolerance --------------------------------------------------------------
+
+
+def test_tiller_hanson_is_exact_for_a_line_and_at_the_ends_of_any_curve():
+    line = bezier.elevate(np.array([[0.0, 0.0], [3.0, 4.0]]), 2)  # a cubic that is a line, evenly parametrised
+    np.testing.assert_allclose(bezier.evaluate(o.tiller_hanson(line, 1.0), TS), o.offset_point(line, TS, 1.0),
+                               atol=1e-12)
+    for seed in range(5):
+        points, _ = random_curve(seed)
+        approx = o.tiller_hanson(points, 0.4)
+        np.testing.assert_allclose(approx[[0, -1]], o.offset_point(points, [0.0, 1.0], 0.4), atol=1e-12)
+        ends = bezier.derivative(approx, [0.0, 1.0])
+        tangents = bezier.derivative(points, [0.0, 1.0])
+        assert np.allclose(ends[:, 0] * tangents[:, 1] - ends[:, 1] * tangents[:, 0], 0, atol=1e-9)  # parallel
+    with pytest.raises(ValueError, match="^points: a leg"):
+        o.tiller_hanson([(0.0, 0.0), (0.0, 0.0), (1.0, 1.0)], 0.5)
+
+
+def test_tiller_hanson_error_falls_fourfold_per_halving():
+    arch = np.array(ARCH.inputs["points"], dtype=float)
+    s = np.linspace(0, 1, 101)
+    errors = []
+    for depth in (3, 4, 5):
+        k, worst, rest = 2**depth, 0.0, arch
+        for j in range(k):
+            piece, rest = bezier.subdivide(rest, 1 / (k - j)) if j < k - 1 else (rest, None)
+            worst = max(worst, o.offset_error(piece, -0.5, bezier.evaluate(o.tiller_hanson(piece, -0.5), s), s).max())
+        errors.append(worst)
+    ratios = np.array(errors[:-1]) / np.array(errors[1:])
+    assert np.all((ratios > 3.5) & (ratios < 4.5))
+
+
+@pytest.mark.parametrize("points, rho, tol", [(ARCH.inputs["points"], -0.5, 1e-3), (ARCH.inputs["points"], 1.0, 1e-4),
+                                              (POCKET, 0.3, 1e-3)])
+def test_the_tiller_hanson_offset_keeps_its_tolerance(points, rho, tol):
+    breaks, pieces, error = o.tiller_hanson_offset(points, rho, tol)
+    assert error <= tol and breaks[0] == 0 and breaks[-1] == 1 and len(pieces) == len(breaks) - 1
+    np.testing.assert_allclose(pieces[1:, 0], pieces[:-1, -1], atol=1e-12)  # the pieces meet
+    s = np.linspace(0, 1, 401)
+    for (a, b), piece in zip(zip(breaks, breaks[1:]), pieces):
+        assert o.offset_error(points, rho, bezier.evaluate(piece, s), a + s * (b - a)).max() <= 1.05 * tol
+    with pytest.raises(ValueError, match="^tol"):
+        o.tiller_hanson_offset(points, rho, 0.0)
+
+
+@pytest.mark.parametrize("degree", [2, 3, 4])
+@pytest.mark.parametrize("tol", [1e-2, 1e-4, 1e-6])
+def test_the_fitted_offset_keeps_its_tolerance_on_a_dense_grid(degree, tol):
+    arch = ARCH.inputs["points"]
+    control, knots, error = o.fit_offset(arch, 1.0, tol, degree=degree)
+    assert error <= tol and len(knots) == len(control) + degree - 1
+    ts = np.linspace(0, 1, 4001)
+    gap = np.linalg.norm(de_boor(control, knots, ts) - o.offset_point(arch, ts, 1.0), axis=1)
+    assert gap.max() <= 1.05 * tol
+
+
+def test_a_fit_runs_through_cusps_and_over_a_part_of_the_curve():
+    control, knots, error = o.fit_offset(POCKET, -0.8, 1e-5, interval=(0.2, 0.8))  # two cusps inside
+    ts = np.linspace(0.2, 0.8, 2001)
+    gap = np.linalg.norm(de_boor(control, knots, ts) - o.offset_point(POCKET, ts, -0.8), axis=1)
+    assert knots[0] == 0.2 and knots[-1] == 0.8 and gap.max() <= 1.05e-5
+    weights = [1.0, 2.0, 1.0]
+    control, knots, error = o.fit_offset(POCKET, 0.5, 1e-6, weights)
+    assert error <= 1e-6

@@ -173,3 +173,16 @@ def test_plot_offsets_and_the_circle_of_curvature():
     np.testing.assert_allclose(circle.center, [2.0, 1.5 - ARCH.results["min_radius"]])
     with pytest.raises(TypeError, match="^ax"):
         figures.plot_offset("not an axes", ARCH.inputs["points"], 1.0)
+
+
+def test_the_gouging_explorer_trims_the_path_to_what_keeps_its_distance():
+    explorer = widgets.gouging_explorer()
+    state = explorer.update(curve="parabola y = x²", rho=-0.8, t=0.5)
+    assert state["kind"] == "local" and state["trimmed"].shape == (2, 2)
+    np.testing.assert_allclose(state["trimmed"], offsets.trim_offset(CURVES["parabola y = x²"], -0.8))
+    kept = np.vstack(state["kept_paths"])
+    distance = offsets.distance_to_curve(CURVES["parabola y = x²"], kept)
+    assert np.all(distance >= 0.8 * (1 - 1e-9))
+    assert "trimmed path keeps t in [0.000, 0.292], [0.708, 1.000]" in explorer.readout.value
+    state = explorer.update(curve="convex arch", rho=-1.0)  # outside the arch: nothing to trim
+    assert state["trimmed"].tolist() == [[0.0, 1.0]] and state["kind"] == "none"

@@ -23,3 +23,13 @@ CALLS = {
     "ph_offset": Call((PH_CUBIC, 0.25)),
     "parabola_offset": Call((0.5,), dict(interval=[-1.0, 1.0])),
 }
+CALLS.update({
+    "centre_of_curvature": [Call((ARCH, 0.3), parameter="t"), Call((ARCH, 0.3, WEIGHTS), parameter="t")],
+    "distance_to_curve": [Call((ARCH, [2.0, 1.0])), Call((ARCH, [[2.0, 1.0], [0.5, -1.0]], WEIGHTS))],
+    "offset_error": [Call((ARCH, 0.3, [2.0, 1.25], 0.5), parameter="t"),
+                     Call((ARCH, 0.3, [2.0, 1.25], 0.5, WEIGHTS), parameter="t")],
+    "trim_offset": [Call((ARCH, -0.5)), Call((ARCH, 1.0, WEIGHTS), dict(samples=50))],
+    "tiller_hanson": Call((ARCH, 0.5)),
+    "tiller_hanson_offset": Call((ARCH, -0.5, 1e-2)),
+    "fit_offset": [Call((ARCH, -0.5, 1e-3)), Call((ARCH, 0.5, 1e-3, WEIGHTS), dict(interval=[0.2, 0.8], degree=2))],
+})
