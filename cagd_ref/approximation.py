@@ -1,22 +1,25 @@
 """Approximation: best constants, least-squares B-spline fitting, parametrization, fairing. Chapter 11 of the notes.
 
-Samples are points P_k, an (M, d) array, each with a parameter s_k (params,
-(M,)); the approximating curve is a degree-n B-spline with control points
-T_j, (c, d), and knots in the notes' convention (c + n - 1 knots, domain
-[t_(n-1), t_(c-1)]; see `cagd_ref.bspline`). Every parameter must lie in the
-domain. The fit minimises the sum of squared distances
+Samples are points Q_k, an (M, d) array (`points`), each with a parameter τ_k
+(`params`, (M,)); the approximating curve P(t) = Σ_j P_j N_j(t) is a degree-n
+B-spline with control points P_j, (c, d), and knots in the notes' convention
+(c + n - 1 knots, domain [t_(n-1), t_(c-1)]; see `cagd_ref.bspline`). Every
+parameter must lie in the domain. The fit minimises the sum of squared distances
 
-    Lsq(T) = Σ_k ‖P_k - Σ_j T_j B_j(s_k)‖²                          (11.1)
+    Lsq(P_0, ..., P_(c-1)) = Σ_k ‖Q_k - Σ_j P_j N_j(τ_k)‖²          (11.1)
 
-whose stationary point solves the normal equations M_fit T = B with
-M_fit = NᵀN, B = NᵀP and N[k, j] = B_j(s_k) (11.3). Fairing adds a weight
-times the bending energy ∫‖P''(s)‖² ds over the domain, which is TᵀM_fair T
-summed over the coordinates (11.6, 11.7). Only n + 1 basis functions are
-nonzero at a parameter, so M_fit and M_fair are banded: the fast solvers
-assemble and factor the band (O(M n² + c n²)); `normal_equations` builds the
-same system densely from `bspline.basis_matrix`, the plain form the chapter shows.
-Fairing within boxes around the samples is a small quadratic programme, which
-`box_programme` solves by an interior-point method; the module needs NumPy only.
+whose stationary points solve the normal equations NᵀN P = NᵀQ with the
+collocation matrix N[k, j] = N_j(τ_k) (M_fit = NᵀN, (11.3)); they have one
+solution exactly when the parameters satisfy the Schoenberg-Whitney condition
+(`schoenberg_whitney`). Fairing adds a weight λ (the argument `weight`) times the
+bending energy ∫‖P''(t)‖² dt over the domain, which is Σ_ij M_fair[i, j] P_i·P_j
+(11.6, 11.7). Only n + 1 basis functions are nonzero at a parameter, so M_fit and
+M_fair are banded: the fast solvers assemble and factor the band (O(M n² + c n²));
+`normal_equations` and `fairing_matrix_plain` build the same matrices densely, the
+plain forms the chapter shows. Parameter correction (`project_parameters`,
+`parameter_correction`) moves each τ_k to the foot point of Q_k on the fit and
+refits. Fairing within boxes around the samples is a small quadratic programme,
+which `box_programme` solves by an interior-point method; the module needs NumPy only.
 """
 
 from __future__ import annotations
@@ -26,7 +29,18 @@ import math
 import numpy as np
 
 from ._validation import as_count, as_float_array, as_parameter, as_points, as_scalar
-from .bspline import _in_domain, _nonzero_spans, _spans, basis_matrix, checked_knots, derivative, greville
+from .bspline import (
+    _in_domain,
+    _nonzero_spans,
+    _spans,
+    basis_matrix,
+    checked_bspline,
+    checked_knots,
+    de_boor,
+    derivative,
+    domain,
+    greville,
+)
 from .polynomials import BLOCK
 
 __all__ = [
@@ -35,10 +49,16 @@ __all__ = [
     "chord_length_parameters",
     "centripetal_parameters",
     "fitting_knots",
+    "fit_inputs",
+    "checked_params",
+    "schoenberg_whitney",
     "normal_equations",
     "least_squares_fit",
     "fit_error",
+    "project_parameters",
+    "parameter_correction",
     "fairing_matrix",
+    "fairing_matrix_plain",
     "fairing_energy",
     "faired_fit",
     "constrained_fit",
@@ -92,7 +112,7 @@ def _samples(points, name: str = "points", min_count: int = 2) -> np.ndarray:
 
 
 def _cumulative_parameters(pts: np.ndarray, exponent: float) -> np.ndarray:
-    """s_0 = 0, s_j = Σ_(i<=j) ‖P_i - P_(i-1)‖^exponent, divided by the total; the last is exactly 1."""
+    """τ_0 = 0, τ_j = Σ_(i<=j) ‖Q_i - Q_(i-1)‖^exponent, divided by the total; the last is exactly 1."""
     steps = np.linalg.norm(np.diff(pts, axis=0), axis=1)
     total_length = steps.sum()
     if total_length == 0:
@@ -104,13 +124,13 @@ def _cumulative_parameters(pts: np.ndarray, exponent: float) -> np.ndarray:
 
 
 def uniform_parameters(points) -> np.ndarray:
-    """Evenly spaced parameters s_j = j / (M - 1) for M samples (M >= 2): (M,). Notes §11.3.1, (11.4)."""
+    """Evenly spaced parameters τ_j = j / (M - 1) for M samples (M >= 2): (M,). Notes §11.3.1, (11.4)."""
     pts = _samples(points)
     return np.linspace(0.0, 1.0, len(pts))
 
 
 def chord_length_parameters(points) -> np.ndarray:
-    """Normalised chord-length parameters: s_j = length of the polygon P_0..P_j / its whole length. Notes §11.3.1.
+    """Normalised chord-length parameters: τ_j = length of the polygon Q_0..Q_j / its whole length. Notes §11.3.1.
 
     points: (M, d), M >= 2 -> (M,) from 0 to 1. The notes call it "arc length";
     it is the arc length of the polygon through the samples. Repeated
@@ -146,8 +166,7 @@ def fitting_knots(params, count: int, degree: int, method: str = "uniform") -> n
     ends near the first and last samples, and count - n - 1 interior knots:
     "uniform" spaces them evenly; "averaging" places them among the sorted
     parameters (Piegl and Tiller's (9.68)-(9.69)) so that every knot span holds
-    a parameter, which keeps the normal equations nonsingular; it needs
-    count <= len(params).
+    a parameter and the knots follow the data; it needs count <= len(params).
     Ref: L. Piegl and W. Tiller, The NURBS Book, 2nd ed., Springer, 1997, §9.4.1.
     """
     s = np.sort(_parameters(params, "params"))
@@ -172,6 +191,51 @@ def fitting_knots(params, count: int, degree: int, method: str = "uniform") -> n
     return knots
 
 
+def checked_params(params, knots, degree: int) -> np.ndarray:
+    """Parameters checked to be a 1-D array of numbers in the domain [t_(n-1), t_(c-1)] of the knots: (M,). Notes §11.3.
+
+    A ValueError names `params` (or `knots`, `degree`) and says what is wrong.
+    """
+    knot_vector, n = checked_knots(knots, degree)
+    taus = _parameters(params, "params")
+    _in_domain(taus, knot_vector, n, "params")
+    return taus
+
+
+def schoenberg_whitney(params, knots, degree: int) -> np.ndarray:
+    """The parameter each basis function gets in the Schoenberg-Whitney test: (c,), NaN from the first failure on.
+
+    The collocation matrix N[k, j] = N_j(τ_k) has full rank c (so the normal
+    equations have one solution) exactly when some parameters
+    τ_(k_0) < τ_(k_1) < ... < τ_(k_(c-1)) satisfy N_j(τ_(k_j)) != 0 for every j
+    (Schoenberg and Whitney 1953; de Boor, A Practical Guide to Splines, ch. XIII).
+    The greedy choice finds such parameters whenever they exist: N_0, N_1, ... in
+    turn take the smallest distinct parameter beyond the previous choice where they
+    are nonzero. Returns the choice; entries from the first basis function that
+    finds none are NaN, so the condition holds iff no entry is NaN. Notes §11.3.2.
+
+    A quadratic with knots [0, 0, 0.5, 1, 1] (c = 4): N_3 lives on (0.5, 1], where
+    the first four parameters leave it nothing; the fifth serves it.
+
+    >>> schoenberg_whitney([0.1, 0.2, 0.3, 0.4], [0, 0, 0.5, 1, 1], 2).tolist()
+    [0.1, 0.2, 0.3, nan]
+    >>> schoenberg_whitney([0.1, 0.2, 0.3, 0.4, 0.9], [0, 0, 0.5, 1, 1], 2).tolist()
+    [0.1, 0.2, 0.3, 0.9]
+    """
+    values = np.unique(checked_params(params, knots, degree))  # sorted, each value once
+    nonzero = basis_matrix(knots, degree, values) != 0  # nonzero[k, j]: N_j(values[k]) != 0
+    chosen = np.full(nonzero.shape[1], np.nan)
+    k = 0  # the first value not yet passed
+    for j in range(len(chosen)):
+        while k < len(values) and not nonzero[k, j]:
+            k += 1
+        if k == len(values):
+            break  # N_j finds no value of its own: the condition fails
+        chosen[j] = values[k]
+        k += 1
+    return chosen
+
+
 # --- input checking and the banded kernels ------------------------------------------------------
 
 
@@ -182,25 +246,35 @@ def _parameters(params, name: str) -> np.ndarray:
     return u
 
 
-def _fit_inputs(points, params, knots, degree):
-    """Checked (samples (M, d), params (M,), knots, degree n, control point count c) of a fitting problem."""
+def fit_inputs(points, params, knots, degree) -> tuple[np.ndarray, np.ndarray, np.ndarray, int]:
+    """The checked inputs of a fitting problem: (samples (M, d), params (M,), knots, degree n). Notes §11.3.
+
+    points (M, d); params (M,), one per sample, each in the domain
+    [t_(n-1), t_(c-1)] of the knots (notes' convention); a ValueError names the
+    argument that is wrong.
+    """
     pts = as_points(points)
     u = _parameters(params, "params")
     if len(u) != len(pts):
         raise ValueError(f"params: expected one parameter per sample ({len(pts)}), got {len(u)}")
     kn, n = checked_knots(knots, degree)
-    _in_domain(u, kn, n, "params")
+    return pts, checked_params(u, kn, n), kn, n
+
+
+def _fit_inputs(points, params, knots, degree):
+    """`fit_inputs` and the number of control points c."""
+    pts, u, kn, n = fit_inputs(points, params, knots, degree)
     return pts, u, kn, n, len(kn) - n + 1
 
 
 def _local_basis(kn: np.ndarray, n: int, ts: np.ndarray, spans: np.ndarray, order: int = 0) -> np.ndarray:
-    """The order-th derivatives of the n+1 basis functions B_(j-n+1) .. B_(j+1) that live on each t's span j: (n+1, k).
+    """The order-th derivatives of the n+1 basis functions N_(j-n+1) .. N_(j+1) that live on each t's span j: (n+1, k).
 
     The triangle of the Cox-de Boor recurrence on the span's knots, one column
     of parameters at a time: degree p comes from degree p-1 by
-    B_a^p = (t - u_a) / (u_(a+p) - u_a) B_a^(p-1) + (u_(a+p+1) - t) / (u_(a+p+1) - u_(a+1)) B_(a+1)^(p-1),
+    N_a^p = (t - u_a) / (u_(a+p) - u_a) N_a^(p-1) + (u_(a+p+1) - t) / (u_(a+p+1) - u_(a+1)) N_(a+1)^(p-1),
     and its top `order` steps use the derivative rule
-    B_a^p' = p (B_a^(p-1) / (u_(a+p) - u_a) - B_(a+1)^(p-1) / (u_(a+p+1) - u_(a+1))) instead.
+    N_a^p' = p (N_a^(p-1) / (u_(a+p) - u_a) - N_(a+1)^(p-1) / (u_(a+p+1) - u_(a+1))) instead.
     Every denominator spans the span itself, so none is zero.
     """
     values = np.zeros((n + 1, len(ts)))
@@ -231,7 +305,7 @@ def _local_basis(kn: np.ndarray, n: int, ts: np.ndarray, spans: np.ndarray, orde
 
 
 def _gram_band(first: np.ndarray, values: np.ndarray, c: int, weights=None) -> np.ndarray:
-    """Band (n+1, c) of G = Σ_k w_k b(s_k) b(s_k)ᵀ: band[r, i] = G[i, i+r] (zero past the end)."""
+    """Band (n+1, c) of G = Σ_k w_k b(τ_k) b(τ_k)ᵀ, b = (N_0, ..., N_(c-1)): band[r, i] = G[i, i+r] (0 past the end)."""
     n = len(values) - 1
     band = np.zeros((n + 1, c))
     scaled = values if weights is None else values * weights
@@ -242,7 +316,7 @@ def _gram_band(first: np.ndarray, values: np.ndarray, c: int, weights=None) -> n
 
 
 def _project(first: np.ndarray, values: np.ndarray, pts: np.ndarray, c: int) -> np.ndarray:
-    """B = Nᵀ P: (c, d), b_i = Σ_k B_i(s_k) P_k."""
+    """NᵀQ: (c, d), row i = Σ_k N_i(τ_k) Q_k."""
     columns = np.ascontiguousarray(pts.T)
     out = np.zeros((pts.shape[1], c))
     for a in range(len(values)):
@@ -310,15 +384,22 @@ def _solve_band(band: np.ndarray, rhs: np.ndarray) -> np.ndarray:
     return np.array(solution).T
 
 
-def _singular_message(kn: np.ndarray, n: int, column: int, name: str = "params") -> str:
-    a, b = kn[max(column - 1, 0)], kn[min(column + n - 1, len(kn) - 1)]
-    return (f"{name}: the normal equations are singular: the basis function B_{column}, nonzero on "
-            f"[{a:g}, {b:g}], is not pinned down by the samples (a knot span with no parameter, or fewer "
-            "distinct parameters than control points)")
+def _singular_message(u: np.ndarray, kn: np.ndarray, n: int, name: str = "params") -> str:
+    """Why the normal equations are singular: the basis function the Schoenberg-Whitney test cannot serve."""
+    chosen = schoenberg_whitney(u, kn, n)
+    if not np.isnan(chosen).any():
+        return (f"{name}: the normal equations are numerically singular: the Schoenberg-Whitney condition holds, "
+                "but only barely (parameters very close to each other or to the ends of supports)")
+    j = int(np.argmax(np.isnan(chosen)))
+    a, b = kn[max(j - 1, 0)], kn[min(j + n, len(kn) - 1)]
+    after = "" if j == 0 else f" beyond the parameter {chosen[j - 1]:g} taken by N_{j - 1}"
+    return (f"{name}: the normal equations are singular: the basis function N_{j}, nonzero on [{a:g}, {b:g}], finds "
+            f"no parameter of its own{after} (the Schoenberg-Whitney condition fails: no increasing choice of "
+            "parameters with N_j(τ_(k_j)) != 0 for every j)")
 
 
 def _fit_system(pts, u, kn, n, c):
-    """Band of M_fit and B = NᵀP of a fitting problem."""
+    """Band of M_fit and NᵀQ of a fitting problem."""
     spans = _spans(kn, n, u)
     values = _local_basis(kn, n, u, spans)
     first = spans - n + 1
@@ -326,7 +407,7 @@ def _fit_system(pts, u, kn, n, c):
 
 
 def _fairing_band(kn: np.ndarray, n: int, order: int = 2) -> np.ndarray:
-    """Band (n+1, c) of M_fair[i, j] = ∫ B_i^(order) B_j^(order) over the domain, by Gauss-Legendre per span.
+    """Band (n+1, c) of M_fair[i, j] = ∫ N_i^(order) N_j^(order) over the domain, by Gauss-Legendre per span.
 
     On each span of positive length the integrand is a polynomial of degree
     2(n - order), which n - order + 1 Gauss points integrate exactly.
@@ -341,37 +422,41 @@ def _fairing_band(kn: np.ndarray, n: int, order: int = 2) -> np.ndarray:
     return _gram_band(spans_of - n + 1, values, c, (half[:, None] * weights).ravel())
 
 
-def _solve_fit(band, rhs, kn, n, name: str = "params") -> np.ndarray:
+def _solve_fit(band, rhs, kn, n, u, faired: bool = False, name: str = "params") -> np.ndarray:
     try:
         return _solve_band(band, rhs)
-    except _Singular as err:
-        raise ValueError(_singular_message(kn, n, err.column, name)) from None
+    except _Singular:
+        if faired:
+            raise ValueError(f"{name}: the faired system is singular: the samples do not pin down the curves of zero "
+                             "bending energy (fewer than two distinct parameters, or a knot of multiplicity n that "
+                             "lets a straight piece turn unseen)") from None
+        raise ValueError(_singular_message(u, kn, n, name)) from None
 
 
 # --- 11.3: least squares ---------------------------------------------------------------------------
 
 
 def normal_equations(points, params, knots, degree: int) -> tuple[np.ndarray, np.ndarray]:
-    """The normal equations M_fit T = B of the least-squares fit, dense: (M_fit (c, c), B (c, d)). Notes §11.3, (11.3).
+    """The normal equations NᵀN P = NᵀQ of the least-squares fit, dense: (M_fit (c, c), NᵀQ (c, d)). Notes §11.3.
 
-    a_ij = Σ_k B_i(s_k) B_j(s_k) and b_i = Σ_k P_k B_i(s_k), i.e. NᵀN and NᵀP
-    with the collocation matrix N[k, j] = B_j(s_k) of `bspline.basis_matrix`.
-    The plain form of `least_squares_fit`, which assembles only the band.
+    M_fit[i, j] = Σ_k N_i(τ_k) N_j(τ_k) and (NᵀQ)_i = Σ_k N_i(τ_k) Q_k, with the
+    collocation matrix N[k, j] = N_j(τ_k) of `bspline.basis_matrix`. The plain
+    form of `least_squares_fit`, which assembles only the band.
     """
-    pts, u, kn, n, _ = _fit_inputs(points, params, knots, degree)
-    collocation = basis_matrix(kn, n, u)
-    return collocation.T @ collocation, collocation.T @ pts
+    samples, taus, knot_vector, n = fit_inputs(points, params, knots, degree)
+    collocation = basis_matrix(knot_vector, n, taus)  # N[k, j] = N_j(τ_k), shape (M, c)
+    return collocation.T @ collocation, collocation.T @ samples
 
 
 def least_squares_fit(points, params, knots, degree: int) -> np.ndarray:
-    """Control points (c, d) of the degree-n B-spline that minimises Σ_k ‖P(s_k) - P_k‖². Notes §11.3, (11.1)-(11.3).
+    """Control points (c, d) of the degree-n B-spline that minimises Σ_k ‖P(τ_k) - Q_k‖². Notes §11.3, (11.1)-(11.3).
 
-    points: (M, d) samples; params: (M,) in the domain; knots: (c + n - 1,) in
-    the notes' convention, so c = len(knots) - degree + 1. Solves M_fit T = B
-    (`normal_equations`) in band form by Cholesky. A ValueError names the basis
-    function the samples cannot pin down when the system is singular
-    (Schoenberg-Whitney: some knot span without data, or fewer distinct
-    parameters than control points).
+    points: (M, d) samples Q_k; params: (M,) their parameters τ_k in the domain;
+    knots: (c + n - 1,) in the notes' convention, so c = len(knots) - degree + 1.
+    Solves NᵀN P = NᵀQ (`normal_equations`) in band form by Cholesky. When the
+    system is singular (the parameters fail the Schoenberg-Whitney condition,
+    `schoenberg_whitney`) a ValueError names the first basis function that finds
+    no parameter of its own.
 
     Five samples of the parabola y = x² fitted by a quadratic Bézier curve over [0, 1]
     (knots [0, 0, 1, 1]) give back its control points exactly:
@@ -382,11 +467,11 @@ def least_squares_fit(points, params, knots, degree: int) -> np.ndarray:
     """
     pts, u, kn, n, c = _fit_inputs(points, params, knots, degree)
     band, rhs = _fit_system(pts, u, kn, n, c)
-    return _solve_fit(band, rhs, kn, n)
+    return _solve_fit(band, rhs, kn, n, u)
 
 
 def fit_error(points, params, control_points, knots) -> tuple[float, float]:
-    """How well a B-spline fits samples: (Σ_k ‖P(s_k) - P_k‖², max_k ‖P(s_k) - P_k‖). Notes §11.3, (11.1).
+    """How well a B-spline fits samples: (Σ_k ‖P(τ_k) - Q_k‖², max_k ‖P(τ_k) - Q_k‖). Notes §11.3, (11.1).
 
     control_points: (c, d) with knots (c + n - 1,); points (M, d), params (M,) in the domain.
     """
@@ -401,6 +486,77 @@ def fit_error(points, params, control_points, knots) -> tuple[float, float]:
     _in_domain(u, kn, n, "params")
     residuals = np.linalg.norm(_evaluate(ctrl, kn, n, u) - pts, axis=1)
     return float(np.sum(residuals**2)), float(residuals.max())
+
+
+def project_parameters(points, params, control_points, knots, steps: int = 4) -> np.ndarray:
+    """Move each τ_k towards the foot point of Q_k on the curve, by Newton's method: new params (M,). Notes §11.3.
+
+    The parameter t closest to Q makes the offset P(t) - Q perpendicular to the
+    curve, f(t) = (P(t) - Q)·P'(t) = 0, and f'(t) = P'·P' + (P(t) - Q)·P''.
+    Where f' <= 0 (far from the curve, Newton would head for a maximum) the step
+    uses ‖P'‖² instead of f', the first-order correction of Hoschek.
+    Each of `steps` Newton steps t <- t - f/f' is clamped to the domain and kept
+    only where it brings the curve point closer to its sample (else it is halved,
+    up to five times, and finally dropped), so no distance grows. points (M, d);
+    params (M,) in the domain; control_points (c, d) with knots (c + n - 1,).
+    Ref: J. Hoschek, Intrinsic parametrization for approximation, CAGD 5, 1988;
+    L. Piegl and W. Tiller, The NURBS Book, 2nd ed., 1997, §6.1 (point inversion).
+    """
+    samples = as_points(points)
+    control, knot_vector, n = checked_bspline(as_points(control_points, "control_points"), knots)
+    taus = checked_params(params, knot_vector, n)
+    if len(taus) != len(samples):
+        raise ValueError(f"params: expected one parameter per sample ({len(samples)}), got {len(taus)}")
+    if control.shape[1] != samples.shape[1]:
+        raise ValueError(f"control_points: expected dimension {samples.shape[1]} like the samples, got {control.shape}")
+    start, end = domain(knot_vector, n)
+    for _ in range(as_count(steps, "steps")):
+        offset = de_boor(control, knot_vector, taus) - samples  # P(τ_k) - Q_k
+        first = derivative(control, knot_vector, taus, 1)
+        second = derivative(control, knot_vector, taus, 2)
+        f = np.sum(offset * first, axis=1)
+        speed = np.sum(first * first, axis=1)
+        slope = speed + np.sum(offset * second, axis=1)
+        slope = np.where(slope > 0, slope, speed)  # where Newton would climb, Hoschek's first-order step
+        step = np.divide(f, slope, out=np.zeros_like(f), where=slope > 0)
+        distance = np.linalg.norm(offset, axis=1)
+        moved = taus.copy()
+        waiting = np.ones(len(taus), dtype=bool)
+        for _ in range(6):  # a step that does not bring Q_k closer is halved, at most 5 times
+            trial = np.clip(taus - step, start, end)
+            closer = waiting & (np.linalg.norm(de_boor(control, knot_vector, trial) - samples, axis=1) < distance)
+            moved[closer] = trial[closer]
+            waiting &= ~closer
+            step = step / 2
+        taus = moved
+    return taus
+
+
+def parameter_correction(points, params, knots, degree: int, iterations: int = 10,
+                         weight: float = 0.0) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Fit, move the parameters to the foot points, refit, `iterations` times: (control, params, lsq). Notes §11.3.
+
+    The fit is `faired_fit` with λ = weight (0: least squares) and the same knots
+    throughout; lsq (iterations + 1,) holds Σ_k ‖P(τ_k) - Q_k‖² after each fit.
+    The samples with the smallest and the largest parameter keep theirs, so the
+    curve keeps starting and ending at the data's ends (a curve end tied to no
+    sample could run on past the last one). Neither half step can raise the
+    objective (the projection shortens every distance, the refit is the best
+    curve for the new parameters), so lsq never grows when λ = 0.
+    Ref: J. Hoschek, Intrinsic parametrization for approximation, CAGD 5, 1988.
+    """
+    rounds = as_count(iterations, "iterations")
+    control = faired_fit(points, params, knots, degree, weight)
+    taus = _parameters(params, "params")
+    ends = [int(np.argmin(taus)), int(np.argmax(taus))]
+    history = [fit_error(points, taus, control, knots)[0]]
+    for _ in range(rounds):
+        moved = project_parameters(points, taus, control, knots)
+        moved[ends] = taus[ends]  # the first and last samples keep the ends of the curve
+        taus = moved
+        control = faired_fit(points, taus, knots, degree, weight)
+        history.append(fit_error(points, taus, control, knots)[0])
+    return control, taus, np.array(history)
 
 
 def _spline_knots(ctrl: np.ndarray, knots) -> tuple[np.ndarray, int]:
@@ -424,7 +580,7 @@ def _evaluate(ctrl: np.ndarray, kn: np.ndarray, n: int, u: np.ndarray) -> np.nda
 
 
 def fairing_matrix(knots, degree: int, order: int = 2) -> np.ndarray:
-    """M_fair (c, c): M_fair[i, j] = ∫ B_i''(s) B_j''(s) ds over the domain, so ∫‖P''‖² = Σ M_ij T_i·T_j. Notes §11.4.
+    """M_fair (c, c): M_fair[i, j] = ∫ N_i''(t) N_j''(t) dt over the domain, so ∫‖P''‖² = Σ M_ij P_i·P_j. Notes §11.4.
 
     knots: (c + n - 1,) in the notes' convention, degree n >= order. Each
     knot span of positive length inside the domain [t_(n-1), t_(c-1)] is
@@ -443,6 +599,29 @@ def fairing_matrix(knots, degree: int, order: int = 2) -> np.ndarray:
     return _band_to_dense(_fairing_band(kn, n, k))
 
 
+def fairing_matrix_plain(knots, degree: int) -> np.ndarray:
+    """M_fair (c, c) in its plain form: Gauss-Legendre span by span on the dense second derivatives. Notes §11.4.
+
+    On a span [a, b] of positive length inside the domain every N_j'' is a
+    polynomial of degree n - 2, so N_i'' N_j'' has degree 2n - 4 and n - 1
+    Gauss-Legendre points integrate it exactly. The columns of
+    derivative(I, knots, t, 2) are the N_j''(t): the curve whose control points
+    are the unit vectors. `fairing_matrix` computes the same band directly.
+    """
+    knot_vector, n = checked_knots(knots, degree)
+    if n < 2:
+        raise ValueError(f"degree: a degree-{n} B-spline has no second derivative to fair; fairing needs degree >= 2")
+    c = len(knot_vector) - n + 1
+    nodes, weights = np.polynomial.legendre.leggauss(n - 1)
+    matrix = np.zeros((c, c))
+    for a, b in zip(knot_vector[n - 1 : c - 1], knot_vector[n:c]):  # the spans of the domain
+        if b > a:
+            t = (a + b) / 2 + (b - a) / 2 * nodes
+            second = derivative(np.eye(c), knot_vector, t, 2)  # second[q, j] = N_j''(t_q)
+            matrix += second.T @ (((b - a) / 2 * weights)[:, None] * second)
+    return matrix
+
+
 def _fairing_inputs(knots, degree, order=2):
     kn, n = checked_knots(knots, degree)
     k = as_count(order, "order", minimum=1)
@@ -457,7 +636,7 @@ def _check_fairing_degree(n: int, order: int = 2) -> None:
 
 
 def fairing_energy(control_points, knots, order: int = 2) -> float:
-    """The bending energy ∫‖P''(s)‖² ds of a B-spline over its domain (`order` = 1: ∫‖P'‖²). Notes §11.4."""
+    """The bending energy ∫‖P''(t)‖² dt of a B-spline over its domain (`order` = 1: ∫‖P'‖²). Notes §11.4."""
     ctrl = as_points(control_points, "control_points")
     kn, n = _spline_knots(ctrl, knots)
     k = as_count(order, "order", minimum=1)
@@ -478,14 +657,15 @@ def _weight(weight, name: str = "weight") -> float:
 
 
 def faired_fit(points, params, knots, degree: int, weight: float) -> np.ndarray:
-    """Control points (c, d) minimising Σ_k ‖P(s_k) - P_k‖² + weight ∫‖P''(s)‖² ds. Notes §11.4, (11.6)-(11.7).
+    """Control points (c, d) minimising Σ_k ‖P(τ_k) - Q_k‖² + λ ∫‖P''(t)‖² dt, λ = weight. Notes §11.4, (11.6)-(11.7).
 
-    Solves (M_fit + weight M_fair) T = B. weight = 0 is `least_squares_fit`;
-    as the weight grows the curve flattens towards the least-squares straight
-    line P(s) = a + b s (M_fair vanishes on lines), which is why large weights
-    shrink it. With weight > 0 two distinct parameters already make the system
-    nonsingular. The weight's scale depends on the parameter range (the energy
-    scales like length⁻³ of it).
+    Solves (M_fit + λ M_fair) P = NᵀQ. λ = 0 is `least_squares_fit`; as λ
+    grows the curve flattens towards the least-squares straight line
+    P(t) = a + b t (M_fair vanishes on lines), which is why large weights shrink
+    it. With λ > 0 two distinct parameters already make the system nonsingular
+    when no interior knot has multiplicity n (then the curves without bending
+    energy are the straight lines). The weight's scale depends on the parameter
+    range (the energy scales like length⁻³ of it).
 
     Scalar samples of y = x², faired with the weight 1 by a quadratic over [0, 1]:
     the bend is penalised, so the control points move from (0, 0, 1) towards the best line's.
@@ -496,7 +676,8 @@ def faired_fit(points, params, knots, degree: int, weight: float) -> np.ndarray:
     """
     pts, u, kn, n, c = _fit_inputs(points, params, knots, degree)
     band, rhs = _fit_system(pts, u, kn, n, c)
-    return _solve_fit(_faired_band(band, kn, n, _weight(weight)), rhs, kn, n)
+    w = _weight(weight)
+    return _solve_fit(_faired_band(band, kn, n, w), rhs, kn, n, u, faired=w > 0)
 
 
 def _faired_band(fit_band: np.ndarray, kn: np.ndarray, n: int, w: float) -> np.ndarray:
@@ -508,14 +689,14 @@ def _faired_band(fit_band: np.ndarray, kn: np.ndarray, n: int, w: float) -> np.n
 
 
 def constrained_fit(points, params, knots, degree: int, weight: float, targets, target_params) -> np.ndarray:
-    """The faired fit through the targets Q_i at target_params u_i exactly: control points (c, d). Notes §11.4.1.
+    """The faired fit through the targets R_i at target_params v_i exactly: control points (c, d). Notes §11.4.1.
 
-    Minimises Σ_k ‖P(s_k) - P_k‖² + weight ∫‖P''‖² subject to P(u_i) = Q_i.
-    Lagrange multipliers λ_i turn it into one linear system (the notes' block
-    system; their R_j = Q_j is C = Q):
+    Minimises Σ_k ‖P(τ_k) - Q_k‖² + λ ∫‖P''‖² (λ = weight) subject to
+    P(v_i) = R_i. Lagrange multipliers μ_i turn it into one linear system (the
+    notes' block system, with their A = Cᵀ; their R_j = Q_j is the right-hand side R):
 
-        [ M_fit + weight M_fair   A ] [ T ]   [ B ]
-        [ Aᵀ                      0 ] [ Λ ] = [ Q ],    A[j, i] = B_j(u_i)  (c × I),
+        [ M_fit + λ M_fair   Cᵀ ] [ P ]   [ NᵀQ ]
+        [ C                  0  ] [ μ ] = [ R   ],    C[i, j] = N_j(v_i)  (I × c),
 
     of which only T is returned. targets: (I, d), 1 <= I <= c; target_params:
     (I,) in the domain. A ValueError reports a singular system (repeated
@@ -555,17 +736,17 @@ def constrained_fit(points, params, knots, degree: int, weight: float, targets, 
 
 
 def _line_fit(pts: np.ndarray, u: np.ndarray, kn: np.ndarray, n: int) -> np.ndarray:
-    """Control points of the least-squares straight line P(s) = a + b s: (c, d), the limit of infinite weight."""
+    """Control points of the least-squares straight line P(t) = a + b t: (c, d), the limit of infinite weight."""
     design = np.column_stack([np.ones_like(u), u])
     (a, b), *_ = np.linalg.lstsq(design, pts, rcond=None)
-    # The Greville abscissae reproduce s itself, so a line's control points sit at a + b g_j.
+    # The Greville abscissae reproduce t itself, so a line's control points sit at a + b g_j.
     return a + greville(kn, n)[:, None] * b
 
 
 def fit_within_tolerance(points, params, knots, degree: int, tol: float) -> tuple[np.ndarray, float]:
-    """The fairest B-spline with Σ‖P(s_k) - P_k‖² <= `tol`: (control points (c, d), weight). Notes §11.4.2.
+    """The fairest B-spline with Σ‖P(τ_k) - Q_k‖² <= `tol`: (control points (c, d), weight). Notes §11.4.2.
 
-    The notes' set L2ε = {f : Lsq(f) <= ε} is empty below the least-squares
+    The notes' set L2ε = {f : Lsq(f) <= ε} (ε = tol) is empty below the least-squares
     error (a ValueError). Otherwise its fairest member is the faired fit whose
     weight makes Lsq equal to `tol` (Lsq grows with the weight), found by
     bisection on log(weight); when even the least-squares straight line is
@@ -580,7 +761,7 @@ def fit_within_tolerance(points, params, knots, degree: int, tol: float) -> tupl
     fair_band = _fairing_band(kn, n)
 
     def error(w: float) -> tuple[float, np.ndarray]:
-        ctrl = _solve_fit(fit_band + w * fair_band, rhs, kn, n)
+        ctrl = _solve_fit(fit_band + w * fair_band, rhs, kn, n, u, faired=w > 0)
         return float(np.sum((_evaluate(ctrl, kn, n, u) - pts) ** 2)), ctrl
 
     lowest, best = error(0.0)
@@ -609,9 +790,9 @@ def fit_within_tolerance(points, params, knots, degree: int, tol: float) -> tupl
 
 
 def estimate_frames(points) -> tuple[np.ndarray, np.ndarray]:
-    """Unit tangents and normals (M, 2) of planar samples: t_i along P_(i+1) - P_(i-1), n_i turned left. Notes §11.4.2.
+    """Unit tangents and normals (M, 2) of planar samples: e_k along Q_(k+1) - Q_(k-1), e_k⊥ turned left. Notes §11.4.2.
 
-    As in the notes, P_(-1) = P_0 and P_M = P_(M-1) at the ends.
+    As in the notes, Q_(-1) = Q_0 and Q_M = Q_(M-1) at the ends.
     """
     pts = _samples(points)
     if pts.shape[1] != 2:
@@ -637,9 +818,9 @@ def _half_widths(half_width, count: int, dim: int) -> np.ndarray:
 
 
 def box_faired_fit(points, params, knots, degree: int, half_width, frame: str = "axes") -> np.ndarray:
-    """The fairest B-spline with each P(s_k) in a box around P_k: control points (c, d). Notes §11.4.2, (11.9)-(11.11).
+    """The fairest B-spline with each P(τ_k) in a box around Q_k: control points (c, d). Notes §11.4.2, (11.9)-(11.11).
 
-    Minimises ∫‖P''‖² subject to |(P(s_k) - P_k)·e| <= h for the box axes e:
+    Minimises ∫‖P''‖² subject to |(P(τ_k) - Q_k)·e| <= h for the box axes e:
     frame "axes" uses the coordinate axes (11.10), any dimension d, and
     half_width h is a number, (M,) or (M, d); frame "curve" (planar) uses the
     unit tangent and normal of `estimate_frames` (11.11), with half_width a

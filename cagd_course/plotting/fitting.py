@@ -69,7 +69,7 @@ def plot_fit(ax, control_points, knots, polygon: bool = True, label: str | None 
 
 
 def plot_residuals(ax, points, fitted, scale: float = 1.0, **style) -> Axes:
-    """Draw the residual of every sample: a segment from P_k to its curve point P(s_k), stretched by `scale`."""
+    """Draw the residual of every sample: a segment from Q_k to its curve point P(τ_k), stretched by `scale`."""
     check_axes(ax)
     pts = planar_points(points)
     on_curve = planar_points(fitted, "fitted")
@@ -147,7 +147,7 @@ def plot_error_measures(ax, values, grid=None) -> Axes:
 
 
 def plot_curvature(ax, control_points, knots, samples: int = 300, **style) -> Axes:
-    """Draw the curvature κ(s) of a planar B-spline over its domain (signed: positive turning left). Notes §11.4."""
+    """Draw the curvature κ(t) of a planar B-spline over its domain (signed: positive turning left). Notes §11.4."""
     check_axes(ax)
     ctrl = planar_points(control_points, "control_points")
     n = degree(ctrl, knots)
@@ -155,6 +155,6 @@ def plot_curvature(ax, control_points, knots, samples: int = 300, **style) -> Ax
     ts = np.linspace(a, b, as_count(samples, "samples", minimum=2))
     ax.plot(ts, spline_curvature(ctrl, knots, ts), **{"color": "C2", "linewidth": 1.3, **style})
     ax.axhline(0.0, color="0.8", linewidth=0.8, zorder=0)
-    ax.set_xlabel("s")
-    ax.set_ylabel("curvature κ(s)")
+    ax.set_xlabel("t")
+    ax.set_ylabel("curvature κ(t)")
     return ax

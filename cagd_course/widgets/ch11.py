@@ -1,11 +1,11 @@
 """Explorers of chapter 11 of the notes (approximation and fairing).
 
-The best constant under two error measures; a fitting lab (noisy samples of a
-shape, parametrization, knots, number of control points, fairing weight, with
-the residuals and the curvature of the fit); the family of faired fits as the
-weight grows, shrinking towards the least-squares line, with interpolation
-constraints as an option; and fairing within tolerance boxes. Samples are
-drawn blue and control polygons red, as in the notes' figures.
+The best constant under two error measures; a fitting lab (noisy samples Q_k of
+a shape, parametrization, parameter correction, knots, number of control points,
+fairing weight λ, with the residuals and the curvature of the fit); the family of
+faired fits as λ grows, shrinking towards the least-squares line, with
+interpolation constraints as an option; and fairing within tolerance boxes.
+Samples are drawn blue and control polygons red, as in the notes' figures.
 """
 
 from __future__ import annotations
@@ -26,6 +26,7 @@ from cagd_ref.approximation import (
     fit_error,
     fitting_knots,
     least_squares_fit,
+    parameter_correction,
     spline_curvature,
     uniform_parameters,
 )
@@ -172,11 +173,13 @@ class FittingExplorer(TwoPanels, Explorer):
             "knots": widgets.Dropdown(description="knots", options=["uniform", "averaging"], value="uniform"),
             "count": _slider(widgets.IntSlider, "control pts", min=4, max=25, value=10),
             "fair": widgets.Checkbox(description="fairing", value=False),
-            "weight": _slider(widgets.FloatLogSlider, "weight", min=-8, max=1, step=0.1, value=1e-4),
+            "weight": _slider(widgets.FloatLogSlider, "λ", min=-8, max=1, step=0.1, value=1e-4),
+            "corrections": _slider(widgets.IntSlider, "corrections", min=0, max=10, value=0),
         }
         super().__init__(controls)
 
-    def compute(self, shape, samples, unevenness, noise, parametrization, knots, count, fair, weight) -> dict:
+    def compute(self, shape, samples, unevenness, noise, parametrization, knots, count, fair, weight,
+                corrections=0) -> dict:
         points = sample_shape(shape, samples, unevenness, noise)
         params = PARAMETRIZATIONS[parametrization](points)
         n = 3
@@ -185,7 +188,7 @@ class FittingExplorer(TwoPanels, Explorer):
         knot_vector = fitting_knots(params, count, n, knots)
         w = weight if fair else 0.0
         try:
-            control = faired_fit(points, params, knot_vector, n, w)
+            control, params, history = parameter_correction(points, params, knot_vector, n, corrections, w)
         except ValueError as err:
             raise ValueError(f"knots, count: {err} (try the averaging knots or fewer control points)") from None
         lsq, worst = fit_error(points, params, control, knot_vector)
@@ -193,6 +196,7 @@ class FittingExplorer(TwoPanels, Explorer):
         ts, curve = fit_samples(control, knot_vector, CURVE_POINTS)
         return {
             "points": points, "params": params, "knots": knot_vector, "control": control, "weight": w,
+            "history": history,
             "on_curve": on_curve, "residuals": np.linalg.norm(on_curve - points, axis=1), "lsq": lsq,
             "max_error": worst, "energy": fairing_energy(control, knot_vector), "ts": ts, "curve": curve,
             "curvature": spline_curvature(control, knot_vector, ts),
@@ -202,25 +206,31 @@ class FittingExplorer(TwoPanels, Explorer):
         plot_samples(ax, state["points"])
         plot_fit(ax, state["control"], state["knots"])
         plot_residuals(ax, state["points"], state["on_curve"])
-        fairing = f", weight {state['weight']:.2g}" if state["weight"] else ""
-        ax.set_title(f"{len(state['control'])} control points, {self.values['parametrization']} parameters{fairing}",
-                     fontsize=10)
+        fairing = f", λ = {state['weight']:.2g}" if state["weight"] else ""
+        corrected = f", corrected {len(state['history']) - 1}×" if len(state["history"]) > 1 else ""
+        ax.set_title(f"{len(state['control'])} control points, {self.values['parametrization']} parameters"
+                     f"{corrected}{fairing}", fontsize=10)
         bare_axes(ax)
         lower = self.lower_axes()
-        lower.plot(state["ts"], state["curvature"], color="C2", linewidth=1.3, label="curvature κ(s)")
+        lower.plot(state["ts"], state["curvature"], color="C2", linewidth=1.3, label="curvature κ(t)")
         scale = np.abs(state["curvature"]).max() / max(state["residuals"].max(), 1e-12)
         lower.vlines(state["params"], 0, state["residuals"] * scale, color="C1", linewidth=1.5)
         lower.axhline(0.0, color="0.8", linewidth=0.8, zorder=0)
         low, high = min(state["curvature"].min(), 0.0), max(state["curvature"].max(), 0.0)
         lower.vlines(np.unique(state["knots"]), low, high, color="0.85", linewidth=0.8, zorder=0)
         lower.set_xlim(state["ts"][0], state["ts"][-1])
-        lower.set_xlabel("parameter s (grey lines: knots)", fontsize=8)
+        lower.set_xlabel("parameter t (grey lines: knots; stems at the parameters τ_k)", fontsize=8)
         lower.locator_params(nbins=4)
 
     def describe(self, state: dict) -> str:
         key = (f"{_swatch('C0')} samples &nbsp; {_swatch('k')} fit &nbsp; {_swatch('C3')} control polygon &nbsp; "
-               f"{_swatch('C1')} residuals &nbsp; {_swatch('C2')} curvature κ(s) (below, residuals scaled to it)")
-        return (f"{key}<br>Lsq = Σ‖P(s_k) − P_k‖² = {state['lsq']:.4g}, largest residual {state['max_error']:.3g}<br>"
+               f"{_swatch('C1')} residuals &nbsp; {_swatch('C2')} curvature κ(t) (below, residuals scaled to it)")
+        corrected = ""
+        if len(state["history"]) > 1:
+            corrected = (f" (before {len(state['history']) - 1} parameter corrections: "
+                         f"{state['history'][0]:.4g})")
+        return (f"{key}<br>Lsq = Σ‖P(τ_k) − Q_k‖² = {state['lsq']:.4g}{corrected}, largest residual "
+                f"{state['max_error']:.3g}<br>"
                 f"bending energy ∫‖P''‖² = {state['energy']:.4g}; curvature from {state['curvature'].min():.3g} "
                 f"to {state['curvature'].max():.3g}")
 
@@ -231,12 +241,14 @@ def fitting_explorer(shape: str = "half ellipse") -> FittingExplorer:
     Controls: `shape` (see `sample_shape`), `samples` (8-80), `unevenness`,
     `noise`, `parametrization` ("uniform", "chord length", "centripetal"),
     `knots` ("uniform" or "averaging", Bézier end knots either way), `count`
-    control points (4-25), `fair` (on/off) and its `weight`. The lower panel
-    plots the curvature of the fit over s and each sample's residual (scaled to
-    the curvature's range). `update` returns {"points", "params", "knots",
-    "control", "weight", "on_curve", "residuals", "lsq", "max_error", "energy",
-    "ts", "curve", "curvature"}; a singular fit (a knot span without samples)
-    is a ValueError naming the controls.
+    control points (4-25), `fair` (on/off) and its `weight` λ, and `corrections`
+    (0-10 rounds of parameter correction, `approximation.parameter_correction`).
+    The lower panel plots the curvature of the fit over t and each sample's
+    residual (scaled to the curvature's range). `update` returns {"points",
+    "params" (after correction), "knots", "control", "weight", "history" (Lsq
+    after each fit), "on_curve", "residuals", "lsq", "max_error", "energy", "ts",
+    "curve", "curvature"}; a singular fit (parameters that fail the
+    Schoenberg-Whitney condition) is a ValueError naming the controls.
     """
     return FittingExplorer(shape)
 
@@ -245,7 +257,7 @@ def fitting_explorer(shape: str = "half ellipse") -> FittingExplorer:
 
 
 class FairingWeightExplorer(TwoPanels, Explorer):
-    """Faired fits of one data set for growing weights: they shrink towards the least-squares line. Notes §11.4."""
+    """Faired fits of one data set for growing weights λ: they shrink towards the least-squares line. Notes §11.4."""
 
     key_in_readout = True
 
@@ -262,7 +274,7 @@ class FairingWeightExplorer(TwoPanels, Explorer):
         self.line = np.array([coefficients[0], coefficients[0] + coefficients[1]])  # P(0), P(1) of the limit
         self._cache: dict = {}
         controls = {
-            "weight": _slider(widgets.FloatLogSlider, "weight", min=-7, max=3, step=0.1, value=1e-2),
+            "weight": _slider(widgets.FloatLogSlider, "λ", min=-7, max=3, step=0.1, value=1e-2),
             "constraints": widgets.Dropdown(description="through", options=list(CONSTRAINTS), value="none"),
         }
         for constraints in CONSTRAINTS:  # all at once, so that switching the dropdown stays quick
@@ -302,25 +314,25 @@ class FairingWeightExplorer(TwoPanels, Explorer):
     def draw(self, ax, state: dict) -> None:
         for curve in state["family"]:
             ax.plot(*curve.T, color="0.75", linewidth=0.9)
-        ax.plot(*self.line.T, "--", color="C4", linewidth=1.2, label="least-squares line (weight → ∞)")
+        ax.plot(*self.line.T, "--", color="C4", linewidth=1.2, label="least-squares line (λ → ∞)")
         plot_samples(ax, self.points)
-        plot_fit(ax, state["control"], self.knots, label=f"weight {state['weight']:.2g}")
+        plot_fit(ax, state["control"], self.knots, label=f"λ = {state['weight']:.2g}")
         if len(state["targets"]):
             ax.plot(*self.points[state["targets"]].T, "o", color="C3", markersize=9, markerfacecolor="none",
                     markeredgewidth=2, label="interpolated")
-        ax.set_title(f"faired fits for weights 1e-6 ... 1e2 (grey); height {state['height']:.3g}", fontsize=10)
+        ax.set_title(f"faired fits for λ = 1e-6 ... 1e2 (grey); height {state['height']:.3g}", fontsize=10)
         bare_axes(ax)
         lower = self.lower_axes()
         # Logarithms on linear axes: log-scale tick labels would cost more than the rest of the drawing.
         lower.plot(np.log10(state["curve_lsq"]), np.log10(state["curve_energy"]), color="0.4", linewidth=1.2)
         lower.plot([np.log10(state["lsq"])], [np.log10(state["energy"])], "o", color="k", markersize=7)
-        lower.set_xlabel("log₁₀ Lsq, Lsq = Σ‖P(s_k) − P_k‖²  (all weights 1e-7 ... 1e3; dot: current)", fontsize=8)
+        lower.set_xlabel("log₁₀ Lsq, Lsq = Σ‖P(τ_k) − Q_k‖²  (λ = 1e-7 ... 1e3; dot: current)", fontsize=8)
         lower.set_ylabel("log₁₀ ∫‖P''‖²", fontsize=8)
         lower.locator_params(nbins=5)
         lower.tick_params(labelsize=8)
 
     def describe(self, state: dict) -> str:
-        key = (f"{_swatch('k')} weight {state['weight']:.3g} &nbsp; {_swatch('0.75')} weights 1e-6, 1e-5, ..., 1e2 "
+        key = (f"{_swatch('k')} λ = {state['weight']:.3g} &nbsp; {_swatch('0.75')} λ = 1e-6, 1e-5, ..., 1e2 "
                f"&nbsp; {_swatch('C4')} least-squares line (the limit) &nbsp; {_swatch('C0')} samples")
         if len(state["targets"]):
             key += f" &nbsp; {_swatch('C3')} interpolated"
@@ -329,11 +341,11 @@ class FairingWeightExplorer(TwoPanels, Explorer):
 
 
 def fairing_weight_explorer(points=None, count: int = 10) -> FairingWeightExplorer:
-    """Slider `weight` (log scale) and dropdown `constraints` ("none", "ends", "ends and middle"). Notes §11.4, §11.4.1.
+    """Slider `weight` λ (log scale), dropdown `constraints` ("none", "ends", "ends and middle"). Notes §11.4, §11.4.1.
 
     points: planar samples (M, 2), default the course's uneven half ellipse;
     chord-length parameters and a cubic with `count` control points and uniform
-    Bézier end knots. The grey family (weights 1e-6 ... 1e2) shrinks towards
+    Bézier end knots. The grey family (λ = 1e-6 ... 1e2) shrinks towards
     the dashed least-squares line; with constraints the curve keeps passing
     through the chosen samples. The lower panel is the L-curve of energy against
     Lsq. `update` returns {"weight", "control", "curve", "lsq", "max_error",

@@ -6,9 +6,12 @@ constants of §11.1 (read from cagd_course/examples/ch11.toml, with the
 corrected e(4.5) = 2.5); the fitting cases use the course's arcs from the
 same file, Bézier fits of polynomial data whose answers are known, sampled
 B-splines that a fit must give back, knot vectors with double knots and
-parameters at both ends of the domain. Random cases come from the generator
-the grader passes in and are built so that every knot span holds several
-samples (the normal equations are well conditioned).
+parameters at both ends of the domain. The normal equations are singular exactly
+when the parameters fail the Schoenberg-Whitney condition: the chapter's clustered
+example (32 distinct parameters, rank 7 of 8) must be rejected, and its example of
+an empty knot span with the condition met must be fitted. Random cases come from
+the generator the grader passes in and are built so that every knot span holds
+several samples (the normal equations are well conditioned).
 """
 
 from __future__ import annotations
@@ -37,7 +40,17 @@ PARABOLA = np.column_stack([X5, X5**2])  # y = x², a quadratic Bézier curve wi
 X7 = np.linspace(0.0, 1.0, 7)
 CUBIC_DATA = np.column_stack([X7, X7**3 - X7])
 DOUBLE = np.array([0.0, 0.0, 0.0, 1.0, 1.0, 2.5, 4.0, 4.0, 4.0])  # cubic, a double knot at 1 (C1 there)
-EMPTY_SPAN_PARAMS = np.concatenate([np.linspace(0.0, 0.3, 12), [1.0]])  # no sample between 0.3 and 1
+# Nothing in (0.3, 1): with 8 uniform cubic knots N_5 and N_6 have no parameter at all (singular).
+EMPTY_SPAN_PARAMS = np.concatenate([np.linspace(0.0, 0.3, 12), [1.0]])
+# The chapter's Schoenberg-Whitney examples (§11.3.2). An empty span (1, 2) with the condition met:
+GAP_KNOTS = np.array([0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 3.0, 3.0])
+GAP_PARAMS = np.concatenate([np.linspace(0.05, 0.95, 10), np.linspace(2.05, 2.95, 10)])
+# Clustered parameters: 32 distinct ones, every N_j nonzero at one, but rank 7 of 8 with uniform knots.
+CLUSTERED = np.concatenate([np.linspace(0.0, 0.3, 30), [0.65, 1.0]])
+CLUSTERED_KNOTS = approximation.fitting_knots(CLUSTERED, 8, 3)
+GAP_RULE = "A knot span without parameters is allowed"
+CLUSTERED_RULE = ("the chapter's clustered example (30 parameters in $[0,0.3]$, two more at 0.65 and 1, cubic, 8 "
+                  "control points, uniform knots)")
 
 
 def _arc(example, parametrization=approximation.chord_length_parameters):
@@ -147,6 +160,8 @@ def least_squares_fit_cases(rng):
                     np.linspace(0, 4, 21), DOUBLE, 3), visible=True),  # a double knot
         Case(EDGE, (CUBIC_DATA[::-1], X7[::-1], [0.0, 0.0, 0.0, 1.0, 1.0, 1.0], 3), visible=True),  # unsorted
         Case(EDGE, (PARABOLA[[0, 2, 4]], X5[[0, 2, 4]], [0.0, 0.0, 1.0, 1.0], 2), visible=True),  # as many as c
+        Case(EDGE, (np.column_stack([GAP_PARAMS, np.cos(GAP_PARAMS)]), GAP_PARAMS, GAP_KNOTS, 3), visible=True,
+             rule=GAP_RULE),  # nothing in (1, 2), yet full rank
     ]
     for _ in range(14):
         cases.append(Case(RANDOM, _random_problem(rng)))
@@ -157,7 +172,9 @@ def least_squares_fit_cases(rng):
         Case(BAD, (PARABOLA, X5, [0.0, 0.0, 1.0, 1.0], 0)),
         Case(BAD, (PARABOLA[:2], X5[:2], [0.0, 0.0, 1.0, 1.0], 2)),  # fewer samples than control points
         Case(BAD, (np.column_stack([EMPTY_SPAN_PARAMS, EMPTY_SPAN_PARAMS**2]), EMPTY_SPAN_PARAMS,
-                   bezier_end_knots(8, 3, 0.0, 1.0), 3)),  # a knot span without samples: singular
+                   bezier_end_knots(8, 3, 0.0, 1.0), 3)),  # N_5, N_6 without a parameter: singular
+        Case(BAD, (np.column_stack([CLUSTERED, np.sin(4 * CLUSTERED)]), CLUSTERED, CLUSTERED_KNOTS, 3),
+             rule=CLUSTERED_RULE),  # rank 7 of 8; np.linalg.solve does not notice
     ]
     return cases
 
@@ -206,7 +223,7 @@ def faired_fit_cases(rng):
         Case(EDGE, (smooth, x, data_knots, 3, 0.01), visible=True),
         Case(EDGE, (CUBIC_DATA, X7 * 4, DOUBLE, 3, 0.5), visible=True),  # a double knot, domain [0, 4]
         Case(EDGE, (np.column_stack([EMPTY_SPAN_PARAMS, EMPTY_SPAN_PARAMS**2]), EMPTY_SPAN_PARAMS,
-                    bezier_end_knots(8, 3, 0.0, 1.0), 3, 1e-6), visible=True),  # an empty span: fairing fills it
+                    bezier_end_knots(8, 3, 0.0, 1.0), 3, 1e-6), visible=True),  # singular without fairing
         Case(EDGE, (CUBIC_DATA, X7, [0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0], 4, 1e-3), visible=True),
     ]
     for _ in range(12):
@@ -277,7 +294,7 @@ EXERCISES = [
         reference=approximation.chord_length_parameters,
         cases=chord_length_parameters_cases,
         compare=close(1e-12, 1e-12),
-        hint="One parameter per sample: s_0 = 0, then the running sum of the chord lengths ‖P_i - P_(i-1)‖ "
+        hint="One parameter per sample: τ_0 = 0, then the running sum of the chord lengths ‖Q_i - Q_(i-1)‖ "
         "(not squared), divided by the total so the last is 1. Reject fewer than two samples and a polygon "
         "of total length 0 with a ValueError.",
         rules={
@@ -291,9 +308,10 @@ EXERCISES = [
         reference=approximation.least_squares_fit,
         cases=least_squares_fit_cases,
         compare=close(1e-8, 1e-8),
-        hint="c = len(knots) - degree + 1 control points. Build N[k, j] = B_j(s_k) (shape (M, c), with the last "
-        "span closed so that s = t_(c-1) counts), then solve (NᵀN) T = NᵀP for all coordinates at once. "
-        "A singular NᵀN (np.linalg.LinAlgError) must become a ValueError.",
+        hint="c = len(knots) - degree + 1 control points. Build N[k, j] = N_j(τ_k) (shape (M, c), with the last "
+        "span closed so that τ = t_(c-1) counts), then solve (NᵀN) P = NᵀQ for all coordinates at once. "
+        "A singular system must become a ValueError, and np.linalg.solve does not always notice one: test the "
+        "Schoenberg-Whitney condition or the rank of N. An empty knot span alone is not singular.",
         rules={
             EDGE: "`params`: `(M,)`, one per sample, in any order, each inside the domain $[t_{n-1},t_{c-1}]$ (both "
                 "ends allowed, see the note on the end of the domain above)",
@@ -307,7 +325,7 @@ EXERCISES = [
         reference=approximation.fairing_matrix,
         cases=fairing_matrix_cases,
         compare=close(1e-8, 1e-8),
-        hint="Integrate B_i''(s) B_j''(s) span by span over the domain [t_(n-1), t_(c-1)] only, skipping spans "
+        hint="Integrate N_i''(t) N_j''(t) span by span over the domain [t_(n-1), t_(c-1)] only, skipping spans "
         "of length zero. Gauss-Legendre with n - 1 points on [a, b] is exact: nodes (a + b)/2 + (b - a)/2 x_q, "
         "weights (b - a)/2 w_q. Degree 1 has no second derivative: raise a ValueError.",
         rules={
@@ -321,7 +339,7 @@ EXERCISES = [
         reference=approximation.faired_fit,
         cases=faired_fit_cases,
         compare=close(1e-7, 1e-8),
-        hint="Solve (NᵀN + weight M_fair) T = NᵀP, with M_fair from your fairing_matrix. weight = 0 is the "
+        hint="Solve (NᵀN + λ M_fair) P = NᵀQ (λ = weight), with M_fair from your fairing_matrix. λ = 0 is the "
         "least-squares fit; a negative weight, or a positive one with degree 1, is a ValueError.",
         rules={
             EDGE: "With `weight = 0` the answer is the least-squares fit; as the weight grows the curve is pulled "
@@ -337,8 +355,8 @@ EXERCISES = [
         reference=approximation.constrained_fit,
         cases=constrained_fit_cases,
         compare=close(1e-7, 1e-7),
-        hint="Solve [[NᵀN + weight M_fair, A], [Aᵀ, 0]] [T; Λ] = [NᵀP; Q] with A[j, i] = B_j(u_i) (c × I) and "
-        "return T only (the first c rows). The targets are met exactly, not approximately: no large penalty "
+        hint="Solve [[NᵀN + λ M_fair, Cᵀ], [C, 0]] [P; μ] = [NᵀQ; R] with C[i, j] = N_j(v_i) (I × c) and "
+        "return P only (the first c rows). The targets are met exactly, not approximately: no large penalty "
         "weights. More targets than control points, or a singular system, is a ValueError.",
         rules={
             EDGE: "The curve must pass through the targets exactly, so treating them as samples with a large weight "

@@ -53,9 +53,10 @@ def sampled_spline(seed, n=3, c=8):
 def test_every_public_name_is_tested():
     tested = {
         "best_constant", "uniform_parameters", "chord_length_parameters", "centripetal_parameters", "fitting_knots",
-        "normal_equations", "least_squares_fit", "fit_error", "fairing_matrix", "fairing_energy", "faired_fit",
-        "constrained_fit", "fit_within_tolerance", "estimate_frames", "box_faired_fit", "box_programme",
-        "spline_curvature",
+        "fit_inputs", "checked_params", "schoenberg_whitney", "normal_equations", "least_squares_fit", "fit_error",
+        "project_parameters", "parameter_correction", "fairing_matrix", "fairing_matrix_plain", "fairing_energy",
+        "faired_fit", "constrained_fit", "fit_within_tolerance", "estimate_frames", "box_faired_fit",
+        "box_programme", "spline_curvature",
     }
     assert set(ap.__all__) == tested
 
@@ -170,14 +171,53 @@ def test_averaging_puts_a_parameter_in_every_span(seed):
     ap.least_squares_fit(np.column_stack([params, params**2]), params, knots, n)  # nonsingular
 
 
-def test_uniform_knots_can_leave_a_span_without_samples():
-    params = np.concatenate([np.linspace(0, 0.3, 30), [1.0]])
+def test_clustered_parameters_fail_schoenberg_whitney_with_uniform_knots():
+    # The chapter's example: 32 distinct parameters, every basis function has one where it is nonzero, yet
+    # N_5, N_6, N_7 share (0.4, 1], which holds only two of them: rank 7 of 8.
+    params = np.concatenate([np.linspace(0, 0.3, 30), [0.65, 1.0]])
     knots = ap.fitting_knots(params, 8, 3)
+    collocation = basis_matrix(knots, 3, params)
+    assert np.all(np.any(collocation > 0, axis=0)) and np.linalg.matrix_rank(collocation) == 7
+    chosen = ap.schoenberg_whitney(params, knots, 3)
+    assert np.isnan(chosen[6:]).all() and not np.isnan(chosen[:6]).any()
     points = np.column_stack([params, np.sin(params)])
-    with pytest.raises(ValueError, match=r"^params: the normal equations are singular: the basis function B_\d"):
+    with pytest.raises(ValueError, match=r"^params: the normal equations are singular: the basis function N_6\b"):
         ap.least_squares_fit(points, params, knots, 3)
-    ap.least_squares_fit(points, params, ap.fitting_knots(params, 8, 3, "averaging"), 3)
-    ap.faired_fit(points, params, knots, 3, 1e-6)  # fairing fills the empty span
+    averaged = ap.fitting_knots(params, 8, 3, "averaging")
+    assert not np.isnan(ap.schoenberg_whitney(params, averaged, 3)).any()
+    ap.least_squares_fit(points, params, averaged, 3)
+    ap.faired_fit(points, params, knots, 3, 1e-6)  # any positive weight pins the rest down
+
+
+def test_a_knot_span_without_parameters_can_leave_the_fit_unique():
+    # Cubic, knots [0, 0, 0, 1, 2, 3, 3, 3]: nothing in (1, 2), yet the condition holds and N has full rank.
+    knots = [0.0, 0.0, 0.0, 1.0, 2.0, 3.0, 3.0, 3.0]
+    params = np.concatenate([np.linspace(0.05, 0.95, 10), np.linspace(2.05, 2.95, 10)])
+    assert not np.isnan(ap.schoenberg_whitney(params, knots, 3)).any()
+    collocation = basis_matrix(knots, 3, params)
+    assert np.linalg.matrix_rank(collocation) == 6 and np.linalg.cond(collocation.T @ collocation) < 100
+    points = np.column_stack([params, np.cos(params)])
+    np.testing.assert_allclose(ap.least_squares_fit(points, params, knots, 3),
+                               np.linalg.lstsq(collocation, points, rcond=None)[0], atol=1e-10)
+
+
+@pytest.mark.parametrize("seed", range(40))
+def test_schoenberg_whitney_holds_exactly_when_the_collocation_matrix_has_full_rank(seed):
+    rng = np.random.default_rng(seed)
+    n = int(rng.integers(1, 5))
+    c = int(rng.integers(n + 1, n + 7))
+    inner = np.sort(rng.choice(np.arange(1, 10), c - n - 1)) / 10  # on a grid: repeated knots happen
+    knots = np.concatenate([np.zeros(n), inner, np.ones(n)])
+    if np.max(np.unique(knots, return_counts=True)[1][1:-1], initial=0) > n:
+        return
+    params = rng.choice(np.arange(0, 21) / 20, int(rng.integers(1, 2 * c)))  # gaps, clusters and repeats
+    chosen = ap.schoenberg_whitney(params, knots, n)
+    full = np.linalg.matrix_rank(basis_matrix(knots, n, params)) == c
+    assert full == (not np.isnan(chosen).any())
+    picked = chosen[~np.isnan(chosen)]
+    assert np.all(np.diff(picked) > 0) and np.all(np.isin(picked, params))
+    columns = basis_matrix(knots, n, picked)
+    assert np.all(np.diag(columns[:, : len(picked)]) > 0)  # each basis function is nonzero at its parameter
 
 
 def test_fitting_knots_reject_bad_input():
@@ -269,6 +309,56 @@ def test_fit_rejects_bad_input():
         ap.least_squares_fit(points[:3], params[:3], knots, n)  # fewer samples than control points
     with pytest.raises(ValueError, match="^params: the normal equations are singular"):
         ap.least_squares_fit(np.ones((20, 2)), np.full(20, 0.3), [0, 0, 0, 1, 1, 1], 3)  # one distinct parameter
+    with pytest.raises(ValueError, match="^params: the faired system is singular"):
+        ap.faired_fit(np.ones((20, 2)), np.full(20, 0.3), [0, 0, 0, 1, 1, 1], 3, 0.1)  # a line is not pinned down
+    with pytest.raises(ValueError, match="^params: expected values in the domain"):
+        ap.schoenberg_whitney([0.5, 2.0], [0, 0, 1, 1], 2)
+
+
+# --- 11.3.3: parameter correction -------------------------------------------------------------------
+
+
+def test_projected_parameters_are_foot_points_and_never_farther():
+    control, knots, params, samples = sampled_spline(3)
+    rng = np.random.default_rng(3)
+    noisy = samples + 0.05 * rng.normal(size=samples.shape)
+    start = np.clip(params + 0.02 * rng.normal(size=params.shape), 0.0, 1.0)
+    moved = ap.project_parameters(noisy, start, control, knots, steps=8)
+    before = np.linalg.norm(de_boor(control, knots, start) - noisy, axis=1)
+    after = np.linalg.norm(de_boor(control, knots, moved) - noisy, axis=1)
+    assert np.all(after <= before)
+    inner = (moved > 0) & (moved < 1)
+    # At an inner foot point the offset is perpendicular to the tangent.
+    offset = de_boor(control, knots, moved[inner]) - noisy[inner]
+    tangent = derivative(control, knots, moved[inner], 1)
+    cosine = np.sum(offset * tangent, axis=1) / (np.linalg.norm(offset, axis=1) * np.linalg.norm(tangent, axis=1))
+    assert np.abs(cosine).max() < 1e-6
+    # Samples on the curve itself come back to their own parameters.
+    np.testing.assert_allclose(ap.project_parameters(samples, start, control, knots, steps=8), params, atol=1e-8)
+
+
+def test_parameter_correction_never_raises_the_error_and_repairs_uniform_parameters():
+    example = notes_example("11.uneven_arc")
+    points = example.inputs["points"]
+    knots = bezier_end_knots(10, 3, 0.0, 1.0)
+    control, params, lsq = ap.parameter_correction(points, ap.uniform_parameters(points), knots, 3, iterations=6)
+    assert np.all(np.diff(lsq) <= 1e-12) and lsq[0] == pytest.approx(example.results["lsq_uniform"], rel=1e-2)
+    assert lsq[-1] < example.results["lsq_chord"]  # better than chord length without correction
+    assert ap.fit_error(points, params, control, knots)[0] == pytest.approx(lsq[-1])
+    faired, _, objective = ap.parameter_correction(points, ap.chord_length_parameters(points), knots, 3, 3, 1e-4)
+    assert faired.shape == (10, 2) and len(objective) == 4
+
+
+# --- the plain forms agree with the banded ones ---------------------------------------------------------
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_the_plain_fairing_matrix_equals_the_banded_one(seed):
+    _, _, knots, n = random_spline_problem(seed, degree=int(np.random.default_rng(seed).integers(2, 6)))
+    plain = ap.fairing_matrix_plain(knots, n)
+    np.testing.assert_allclose(plain, ap.fairing_matrix(knots, n), rtol=1e-10, atol=1e-9 * np.abs(plain).max())
+    with pytest.raises(ValueError, match="^degree"):
+        ap.fairing_matrix_plain([0.0, 0.5, 1.0], 1)
 
 
 def test_fit_error():
@@ -626,3 +716,13 @@ def test_curvature_of_a_parabola_and_a_helix_arc():
     np.testing.assert_allclose(spatial, kappa, rtol=1e-12)
     with pytest.raises(ValueError, match="^t: the curve stops"):
         ap.spline_curvature([[0.0, 0.0], [0.0, 0.0], [1.0, 1.0]], [0.0, 0.0, 1.0, 1.0], 0.0)
+
+
+def test_checked_params_name_what_is_wrong():
+    np.testing.assert_array_equal(ap.checked_params([0.5, 0.0, 1], [0, 0, 1, 1], 2), [0.5, 0.0, 1.0])
+    with pytest.raises(ValueError, match="^params: expected values in the domain"):
+        ap.checked_params([0.5, 1.5], [0, 0, 1, 1], 2)
+    with pytest.raises(ValueError, match="^params"):
+        ap.checked_params([[0.5]], [0, 0, 1, 1], 2)
+    with pytest.raises(ValueError, match="^knots"):
+        ap.checked_params([0.5], [1, 0, 0, 1], 2)

@@ -145,3 +145,14 @@ def test_boxes_too_small_are_refused_by_name():
     with pytest.raises(ValueError, match="^half_width"):
         explorer.update(half_width=0.05, count=6)
     assert explorer.values["half_width"] == 0.15
+
+
+def test_parameter_correction_in_the_lab_repairs_uniform_parameters():
+    explorer = widgets.fitting_explorer()
+    plain = explorer.update(unevenness=1.0, parametrization="uniform", count=10, fair=False, corrections=0)
+    corrected = explorer.update(corrections=6)
+    assert len(corrected["history"]) == 7 and corrected["history"][0] == pytest.approx(plain["lsq"])
+    assert np.all(np.diff(corrected["history"]) <= 1e-12) and corrected["lsq"] < plain["lsq"] / 10
+    params = ap.parameter_correction(corrected["points"], ap.uniform_parameters(corrected["points"]),
+                                     corrected["knots"], 3, 6)[1]
+    np.testing.assert_allclose(corrected["params"], params)
