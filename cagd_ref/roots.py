@@ -7,7 +7,8 @@ and the number of sign changes of the y_i bounds the number of roots (Descartes'
 rule of signs in the Bernstein basis). Three root finders build on that:
 
 - `hull_march` (§9.1): the notes' convex hull marching, one root at a time from
-  the left, with deflation (9.1) after each root;
+  the left, with deflation (9.1) after each root (`hull_march_plain` is the
+  same algorithm as one plain loop, the form the chapter shows);
 - `bcom_roots` (§9.2, reconstructed): isolation between the roots of the
   derivative, found recursively the same way;
 - `bernstein_roots`: the course's default, subdivision with the hull and the
@@ -29,13 +30,15 @@ import numpy as np
 
 from ._validation import as_count, as_float_array, as_interval, as_points, as_scalar, as_vector
 from .bezier import evaluate, subdivide, to_homogeneous
-from .polynomials import bernstein_multiply
+from .polynomials import bernstein_horner, bernstein_multiply
 
 __all__ = [
     "hull_crossing",
+    "polygon_crossing",
     "sign_variations",
     "deflate",
     "hull_march",
+    "hull_march_plain",
     "hull_march_steps",
     "bcom_roots",
     "bcom_steps",
@@ -58,11 +61,11 @@ NOISE = 4 * EPS
 # Steps of the march towards one root before it is declared stuck. A multiple root crawls (the
 # error after k steps falls like 1/k); a simple root converges linearly, at a rate as poor as
 # 0.97 per step when a far coefficient dwarfs the slope at the root (then about 900 steps).
-MARCH_STEPS = 10_000
+MARCH_STEPS = 10_000  # (hull_march_plain repeats this default, as a literal the chapter shows)
 # Interval pieces the subdivision may create in all: far beyond what any polynomial of degree
 # <= 1000 needs, so reaching it means the input is not what the caller thinks (e.g. a huge range).
 MAX_PIECES = 200_000
-NEWTON_STEPS = 100
+NEWTON_STEPS = 100  # (newton_in_bracket repeats this default)
 
 
 # ---------------------------------------------------------------- shared pieces
@@ -95,6 +98,31 @@ def _hull_crossing(y: np.ndarray) -> tuple[float, float] | None:
     if found.size == 0:
         return None
     return float(found.min()), float(found.max())
+
+
+def polygon_crossing(coeffs) -> float | None:
+    """Leftmost point in [0, 1] where the control polygon of the points (i/n, y_i) meets y = 0, or None. Notes §9.1.
+
+    coeffs: (n+1,). Only neighbouring control points are joined, so this is
+    NOT a bound on the roots: the graph may cross the axis before its polygon
+    does. The chapter uses it to show why convex hull marching steps to the
+    hull's crossing (`hull_crossing`) instead.
+
+    >>> polygon_crossing([1.0, -1.0, 2.0, -3.0])       # the leg from (0, 1) to (1/3, -1)
+    0.16666666666666666
+    >>> print(polygon_crossing([1.0, 0.5, 2.0]))
+    None
+    """
+    y = as_vector(coeffs, "coeffs")
+    n = len(y) - 1
+    if n == 0:
+        return 0.0 if y[0] == 0 else None
+    for i in range(n + 1):
+        if y[i] == 0:
+            return i / n
+        if i < n and y[i] * y[i + 1] < 0:  # this leg crosses: where the line through its ends is zero
+            return float(i + y[i] / (y[i] - y[i + 1])) / n
+    return None
 
 
 def sign_variations(coeffs) -> int:
@@ -138,9 +166,20 @@ def _value(c: np.ndarray, t: float) -> float:
     return float(_split(c, t)[0][-1])
 
 
-def _is_zero(value: float, c: np.ndarray) -> bool:
-    """Whether `value` is zero to rounding against the coefficients `c` (see ZERO_TOL)."""
-    return abs(value) <= ZERO_TOL * np.abs(c).max()
+def zero_to_rounding(value: float, coeffs: np.ndarray) -> bool:
+    """Whether `value` is zero to rounding against the coefficients (n+1,): |value| <= 1e-12 max |y_i| (ZERO_TOL)."""
+    return bool(abs(value) <= ZERO_TOL * np.abs(coeffs).max())
+
+
+def rounding_band(sizes: np.ndarray) -> float:
+    """Half-width of the band around y = 0 inside which a coefficient has no trustworthy sign.
+
+    sizes: the coefficients of Σ |y_i| B_i^n on the piece at hand (the scale of
+    the rounding errors of subdividing and evaluating f there). The band is a
+    few units of rounding of their largest value (NOISE = 4 eps): a piece whose
+    whole polygon lies inside it is zero to rounding.
+    """
+    return float(NOISE * np.max(sizes))
 
 
 def _deflate(c: np.ndarray) -> np.ndarray:
@@ -155,7 +194,7 @@ def _deflate_right(c: np.ndarray) -> np.ndarray:
     return n * c[:-1] / np.arange(n, 0, -1)
 
 
-def _checked(coeffs, interval, tol) -> tuple[np.ndarray, tuple[float, float], float]:
+def checked_coefficients(coeffs, interval, tol) -> tuple[np.ndarray, tuple[float, float], float]:
     """The validated inputs every root finder shares: coefficients (n+1,), (t0, t1), tol in (0, 1)."""
     y = as_vector(coeffs, "coeffs")
     t0, t1 = as_interval(interval)
@@ -205,9 +244,10 @@ def deflate(coeffs) -> np.ndarray:
     y = as_vector(coeffs, "coeffs")
     if len(y) < 2:
         raise ValueError(f"coeffs: a constant has no factor t to divide out, got {y.tolist()}")
-    if not _is_zero(y[0], y):
+    if not zero_to_rounding(y[0], y):
         raise ValueError(f"coeffs: f(0) = y_0 = {y[0]:g} is not zero (to rounding), so t does not divide f")
-    return _deflate(y)
+    n = len(y) - 1
+    return n * y[1:] / np.arange(1, n + 1)  # (9.1): g_i = n y_(i+1) / (i + 1), i = 0 .. n-1
 
 
 @dataclass(frozen=True)
@@ -229,16 +269,20 @@ class MarchStep:
     event: str
 
 
-def _march(y: np.ndarray, tol: float, max_steps: int = MARCH_STEPS) -> tuple[list[float], list[tuple], bool]:
-    """Convex hull marching on [0, 1]: (roots, steps as (start, coeffs, crossing, root, event), finished)."""
+def _march(y: np.ndarray, tol: float, max_steps: int = MARCH_STEPS,
+           rule: str = "hull") -> tuple[list[float], list[tuple], bool]:
+    """Convex hull marching on [0, 1]: (roots, steps as (start, coeffs, crossing, root, event), finished).
+
+    rule "polygon" steps to the control polygon's first crossing instead (the wrong rule, for comparison).
+    """
     steps: list[tuple] = []
     at_end = 0
-    while len(y) > 1 and _is_zero(y[-1], y):  # roots at t = 1 are divided out first: the march never reaches them
+    while len(y) > 1 and zero_to_rounding(y[-1], y):  # roots at t = 1 first: the march never reaches them
         y, at_end = _deflate_right(y), at_end + 1
     roots: list[float] = []
     a, since_root = 0.0, 0
     while len(y) > 1:
-        if _is_zero(y[0], y):  # a root where this piece starts (at t0, or a repeated one)
+        if zero_to_rounding(y[0], y):  # a root where this piece starts (at t0, or a repeated one)
             steps.append((a, y, None, a, "root"))
             roots.append(a)
             y, since_root = _deflate(y), 0
@@ -246,16 +290,21 @@ def _march(y: np.ndarray, tol: float, max_steps: int = MARCH_STEPS) -> tuple[lis
         if since_root >= max_steps:
             steps.append((a, y, None, None, "stalled"))
             return roots, steps, False
-        crossing = _hull_crossing(y)
-        if crossing is None:
-            break
-        c = crossing[0]
+        if rule == "polygon":
+            c = polygon_crossing(y)
+            if c is None:
+                break
+        else:
+            crossing = _hull_crossing(y)
+            if crossing is None:
+                break
+            c = crossing[0]
         t = a + (1 - a) * c
         right = _split(y, c)[1]
         # A step shorter than tol is the notes' t_(k+1) = t_k. A value at rounding level is a root. A sign
         # change means rounding stepped over the root, which therefore lies within rounding of t (the hull
         # guarantees none in [a, t)): the root is t, not a as the notes have it.
-        if t - a <= tol or _is_zero(right[0], right) or np.sign(right[0]) != np.sign(y[0]):
+        if t - a <= tol or zero_to_rounding(right[0], right) or np.sign(right[0]) != np.sign(y[0]):
             steps.append((a, y, t, t, "root"))
             roots.append(t)
             y, since_root = _deflate(right), 0
@@ -287,7 +336,7 @@ def hull_march(coeffs, interval=(0, 1), tol: float = 1e-12) -> np.ndarray:
     >>> [round(float(t), 10) for t in hull_march([1.0, 1.0, -3.0, -2.0, 4.0])]
     [0.2547033564, 0.7660291666]
     """
-    y, interval, tol = _checked(coeffs, interval, tol)
+    y, interval, tol = checked_coefficients(coeffs, interval, tol)
     roots, steps, finished = _march(y, tol)
     if not finished:
         near = _to_interval(steps[-1][0], interval)
@@ -298,14 +347,61 @@ def hull_march(coeffs, interval=(0, 1), tol: float = 1e-12) -> np.ndarray:
     return _to_interval(roots, interval)
 
 
-def hull_march_steps(coeffs, interval=(0, 1), tol: float = 1e-12, max_steps: int = MARCH_STEPS) -> list[MarchStep]:
+def hull_march_plain(coeffs, interval=(0, 1), tol: float = 1e-12, max_steps: int = 10_000) -> np.ndarray:
+    """`hull_march` written as one plain loop, the teaching form the chapter shows. Notes §9.1.
+
+    The same algorithm and the same tests for a root as `hull_march` (the tests
+    check that the two agree); it records nothing for figures and takes the
+    step limit as an argument (the default is `hull_march`'s, MARCH_STEPS).
+
+    >>> [round(float(t), 10) for t in hull_march_plain([1.0, 1.0, -3.0, -2.0, 4.0])]
+    [0.2547033564, 0.7660291666]
+    """
+    y, (a, b), tol = checked_coefficients(coeffs, interval, tol)
+    at_right_end = []
+    while len(y) > 1 and zero_to_rounding(y[-1], y):  # f(1) = 0: divide out 1 - s, g_i = n y_i / (n - i)
+        n = len(y) - 1
+        y = n * y[:-1] / np.arange(n, 0, -1)
+        at_right_end.append(1.0)
+    found = []
+    t, steps = 0.0, 0  # y holds f on [t, 1], in its own parameter s in [0, 1]
+    while len(y) > 1:
+        if zero_to_rounding(y[0], y):  # a root where the piece starts
+            found.append(t)
+            y, steps = deflate(y), 0
+            continue
+        if steps == max_steps:
+            raise RuntimeError(f"hull_march_plain: no convergence after {max_steps} steps towards a root near "
+                               f"t = {a + (b - a) * t:.6g}: a multiple root or a tight cluster")
+        crossing = hull_crossing(y)
+        if crossing is None:  # the hull misses the axis: no roots are left
+            break
+        c = crossing[0]  # the hull's leftmost crossing, in the piece's own parameter
+        t_next = t + (1 - t) * c
+        right = subdivide(y[:, None], c)[1][:, 0]  # de Casteljau: f on [t_next, 1]
+        if t_next - t <= tol or zero_to_rounding(right[0], right) or np.sign(right[0]) != np.sign(y[0]):
+            found.append(t_next)  # a tiny step, a zero value, or rounding stepped over the root: it is t_next
+            y, steps = deflate(np.concatenate([[0.0], right[1:]])), 0
+        else:
+            y, steps = right, steps + 1
+        t = t_next
+    return a + (b - a) * np.array(found + at_right_end)
+
+
+def hull_march_steps(coeffs, interval=(0, 1), tol: float = 1e-12, max_steps: int = MARCH_STEPS,
+                     rule: str = "hull") -> list[MarchStep]:
     """Every step of `hull_march` on the same input, for Figure 9.1 and the explorer. Notes §9.1.
 
     A list of `MarchStep`; the last one has event "end" (done) or "stalled"
     (`max_steps` steps towards one root: where `hull_march` raises, this reports).
+    rule: "hull" (the algorithm) or "polygon", which steps to the control
+    polygon's first crossing instead: the rule that can step over a root,
+    kept to show how it fails.
     """
-    y, interval, tol = _checked(coeffs, interval, tol)
-    _, steps, _ = _march(y, tol, as_count(max_steps, "max_steps", minimum=1))
+    y, interval, tol = checked_coefficients(coeffs, interval, tol)
+    if rule not in ("hull", "polygon"):
+        raise ValueError(f"rule: expected 'hull' or 'polygon', got {rule!r}")
+    _, steps, _ = _march(y, tol, as_count(max_steps, "max_steps", minimum=1), rule)
 
     def mapped(t):
         return None if t is None else float(_to_interval(t, interval))
@@ -369,7 +465,7 @@ def _monotone_root(c: np.ndarray, tol: float) -> float:
 
 
 def _bcom_run(coeffs, interval, tol) -> tuple[np.ndarray, list[tuple], tuple[float, float]]:
-    y, interval, tol = _checked(coeffs, interval, tol)
+    y, interval, tol = checked_coefficients(coeffs, interval, tol)
     steps: list[tuple] = []
     found = _bcom(y, 0, tol, steps)
     return _merge(np.array(found), np.array(found), tol), steps, interval
@@ -435,7 +531,7 @@ def bernstein_roots(coeffs, interval=(0, 1), tol: float = 1e-12) -> np.ndarray:
     >>> bernstein_roots([-1.375, 3.25, -4.875, 1.25], interval=(2, 5)).round(12).tolist()
     [2.5, 3.0, 4.75]
     """
-    y, interval, tol = _checked(coeffs, interval, tol)
+    y, interval, tol = checked_coefficients(coeffs, interval, tol)
     lo, hi, brackets = _isolate(y, tol)
     roots = _newton(y, *brackets, tol)
     return _to_interval(_merge(np.concatenate([lo, roots]), np.concatenate([hi, roots]), tol), interval)
@@ -566,42 +662,92 @@ def _newton(y: np.ndarray, a: np.ndarray, b: np.ndarray, fa: np.ndarray, fb: np.
 
 
 def bernstein_roots_plain(coeffs, interval=(0, 1), tol: float = 1e-12) -> np.ndarray:
-    """`bernstein_roots` written one piece at a time: the same subdivision, the same Newton steps. Notes §9.2.
+    """`bernstein_roots` written one piece at a time: the same subdivision, the same Newton steps. Notes §9.1, §9.2.
 
-    The teaching form: each piece is looked at in turn, halved by de Casteljau
-    at 1/2 when nothing can be decided yet, and each isolated root is refined
-    on its own. The tests check that it agrees with `bernstein_roots`.
+    The teaching form the chapter shows: each piece is looked at in turn,
+    halved by de Casteljau at 1/2 when nothing can be decided yet, and each
+    isolated root is refined on its own (`newton_in_bracket`). The tests check
+    that it agrees with `bernstein_roots`.
 
     >>> [round(float(t), 10) for t in bernstein_roots_plain([1.0, -9 / 2, 41 / 6, -1.0, 0.0])]
     [0.0611803043, 0.2814714866, 0.9073482091, 1.0]
     """
-    y, interval, tol = _checked(coeffs, interval, tol)
-    regions = []  # (lo, hi): each holds a root to within tol or to rounding
-    pending = [(y, np.abs(y), 0.0, 1.0)]  # coefficients of f and of Σ |y_i| B_i^n (the rounding scale) on [a, b]
+    y, (t0, t1), tol = checked_coefficients(coeffs, interval, tol)
+    regions = []  # pieces (lo, hi) of [0, 1] that hold a root, to within tol or to rounding
+    pending = [(y, np.abs(y), 0.0, 1.0)]  # f and its rounding scale Σ |y_i| B_i^n, both on the piece [a, b]
     while pending:
         c, m, a, b = pending.pop()
-        noise = NOISE * m.max()
-        above, below, inside = c > noise, c < -noise, np.abs(c) <= noise
-        ends_up, ends_down = (above | inside)[[0, -1]], (below | inside)[[0, -1]]
-        one_signed = (above[1:-1].all() and ends_up.all()) or (below[1:-1].all() and ends_down.all())
-        if one_signed and not inside.all():
-            regions += [(t, t) for t, zero in ((a, inside[0]), (b, inside[-1])) if zero]  # roots only at ends
-        elif inside.all() or b - a <= tol:
-            regions.append((a, b))  # zero to rounding on the whole piece, or too narrow to tell
-        elif not inside[[0, -1]].any() and np.sign(c[0]) != np.sign(c[-1]) and _monotone_signs(c):
-            root = _newton(y, np.array([a]), np.array([b]), c[:1], c[-1:], tol)[0]  # exactly one sign change
+        band = rounding_band(m)
+        above, below = c > band, c < -band
+        inside = ~above & ~below
+        one_signed = (above[1:-1].all() and not below.any()) or (below[1:-1].all() and not above.any())
+        signs = np.sign(c)
+        if one_signed and not inside.all():  # no root inside; an end inside the band is a root there
+            regions += [(end, end) for end, zero in ((a, inside[0]), (b, inside[-1])) if zero]
+        elif inside.all() or b - a <= tol:  # zero to rounding all along, or too narrow to tell
+            regions.append((a, b))
+        elif (not inside[0] and not inside[-1] and signs[0] != signs[-1]
+              and np.all(np.diff(signs) * signs[0] <= 0)):  # the signs change once: exactly one root
+            root = newton_in_bracket(y, (a, b), (c[0], c[-1]), tol)
             regions.append((root, root))
+        else:  # undecided: halve f and its scale together (de Casteljau at 1/2)
+            left, right = subdivide(np.column_stack([c, m]), 0.5)
+            middle = (a + b) / 2
+            pending += [(right[:, 0], right[:, 1], middle, b), (left[:, 0], left[:, 1], a, middle)]
+    return t0 + (t1 - t0) * one_root_per_cluster(regions, tol)
+
+
+def newton_in_bracket(coeffs, bracket, end_values, tol: float, max_steps: int = 100) -> float:
+    """The one root of f = Σ y_i B_i^n inside `bracket` = (a, b) ⊂ [0, 1], by Newton steps kept inside it.
+
+    end_values: f(a) and f(b), of opposite signs. The first guess is the
+    secant's root. A Newton step that would leave the bracket, or that is not
+    shorter than half the step before last, is replaced by bisection. The root
+    is done when a step is shorter than tol, the bracket narrower than tol, or
+    |f| below the rounding error of its own evaluation, η Σ |y_i| B_i^n(x)
+    (further steps would follow rounding noise). `max_steps` is a safeguard
+    (NEWTON_STEPS, as in `bernstein_roots`).
+    """
+    y = np.asarray(coeffs, dtype=float)
+    slope_coeffs = (len(y) - 1) * np.diff(y)  # f' (the hodograph)
+    (lo, hi), (fa, fb) = bracket, end_values
+    x = lo + (hi - lo) * fa / (fa - fb)
+    steps = [hi - lo, hi - lo]  # the lengths of the last two steps
+    for _ in range(max_steps):
+        f, slope = bernstein_horner(y, x), bernstein_horner(slope_coeffs, x)
+        if abs(f) <= EPS * bernstein_horner(np.abs(y), x):
+            break  # zero to the rounding of its own evaluation
+        if (f < 0) == (fa < 0):  # x lies on the side of a: the root is right of it
+            lo = x
         else:
-            (left, right), (m_left, m_right) = _split(c, 0.5), _split(m, 0.5)
-            pending += [(right, m_right, (a + b) / 2, b), (left, m_left, a, (a + b) / 2)]
-    lo, hi = (np.array(side, dtype=float) for side in zip(*regions)) if regions else (np.empty(0), np.empty(0))
-    return _to_interval(_merge(lo, hi, tol), interval)
+            hi = x
+        newton = x - f / slope if slope != 0 else np.inf
+        if lo < newton < hi and abs(f / slope) <= steps[-2] / 2:
+            x_next = newton
+        else:  # out of the bracket, or converging too slowly: bisect
+            x_next = (lo + hi) / 2
+        steps.append(abs(x_next - x))
+        x = x_next
+        if steps[-1] <= tol or hi - lo <= tol:
+            break
+    return float(x)
 
 
-def _monotone_signs(c: np.ndarray) -> bool:
-    """Whether the signs run from that of c_0 to the opposite one without coming back (zeros allowed in between)."""
-    signs = np.sign(c)
-    return bool(np.all(np.diff(signs) * signs[0] <= 0))
+def one_root_per_cluster(regions, tol: float) -> np.ndarray:
+    """Sorted roots in [0, 1], one per cluster of regions (lo, hi) that overlap or lie within tol of each other.
+
+    A cluster is a root seen more than once (from two pieces, or a double root
+    zero to rounding over a stretch): its middle, or the end 0 or 1 of the
+    interval when the cluster reaches it (f is zero to rounding there, and the
+    end is exact).
+    """
+    clusters = []
+    for lo, hi in sorted(regions):
+        if clusters and lo <= clusters[-1][1] + tol:
+            clusters[-1][1] = max(clusters[-1][1], hi)
+        else:
+            clusters.append([lo, hi])
+    return np.array([0.0 if lo <= 0 else 1.0 if hi >= 1 else (lo + hi) / 2 for lo, hi in clusters])
 
 
 # ---------------------------------------------------------------- §9.3 building polynomials, §9.4 line ∩ curve

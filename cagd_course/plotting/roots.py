@@ -26,6 +26,7 @@ __all__ = [
     "mark_roots",
     "plot_march_step",
     "plot_derivative_look",
+    "derivative_name",
     "plot_root_errors",
     "plot_conditioning",
 ]
@@ -37,12 +38,14 @@ METHOD_STYLES = ({"color": "C0", "marker": "o"}, {"color": "C3", "marker": "s"},
 
 
 def plot_explicit(ax, coeffs, interval=(0, 1), hull: bool = True, polygon: bool = True, curve: bool = True,
-                  color: str = "C0", label: str | None = None, samples: int = 200, alpha: float = 1.0) -> Axes:
+                  color: str = "C0", label: str | None = None, samples: int = 200, alpha: float = 1.0,
+                  polygon_color: str | None = None, polygon_label: str | None = None) -> Axes:
     """The explicit Bézier curve y = Σ y_i B_i^n on `interval`, its control points and their convex hull. Notes §2.15.
 
     coeffs: (n+1,). `label` names the curve in a legend; the hull is shaded
     lightly (the region where the graph, and so every root, must lie) and the
-    t axis is drawn so that the crossings show.
+    t axis is drawn so that the crossings show. `polygon_color` and
+    `polygon_label` colour and name the control polygon (grey and unnamed by default).
     """
     check_axes(ax)
     y = as_vector(coeffs, "coeffs")
@@ -53,7 +56,10 @@ def plot_explicit(ax, coeffs, interval=(0, 1), hull: bool = True, polygon: bool 
         ax.add_patch(Polygon(convex_hull(points), closed=True, facecolor=HULL_COLOR, alpha=0.14 * alpha,
                              edgecolor=HULL_COLOR, linewidth=0.9))
     if polygon:
-        ax.plot(*points.T, **{**POLYGON_STYLE, "markersize": 4, "alpha": alpha})
+        style = {**POLYGON_STYLE, "markersize": 4, "alpha": alpha, "label": polygon_label}
+        if polygon_color is not None:
+            style["color"] = polygon_color
+        ax.plot(*points.T, **style)
     if curve:
         s = np.linspace(0.0, 1.0, samples)
         ax.plot(t0 + (t1 - t0) * s, bernstein_horner(y, s), color=color, linewidth=2.0, alpha=alpha, label=label)
@@ -90,8 +96,11 @@ def plot_march_step(ax, steps, k: int, coeffs=None, interval=(0, 1)) -> Axes:
     mark_roots(ax, found, label="roots so far")
     if step.crossing is not None:
         ax.axvline(step.crossing, color="C1", linewidth=1.2, linestyle=":")
-        ax.annotate(f"$t_{{{k + 1}}}$ = {step.crossing:.6g}", (step.crossing, 0), xytext=(5, 8),
-                    textcoords="offset points", fontsize=8, color="C1")
+        # left of the line, on the side of the axis the piece does not reach before t_(k+1)
+        above = step.coeffs[0] > 0
+        ax.annotate(f"$t_{{{k + 1}}}$ = {step.crossing:.6g}", (step.crossing, 0), xytext=(-4, -8 if above else 8),
+                    textcoords="offset points", fontsize=8, color="C1", ha="right",
+                    va="top" if above else "bottom")
     return ax
 
 
@@ -108,11 +117,20 @@ def plot_derivative_look(ax, step, coeffs=None, interval=(0, 1)) -> Axes:
         plot_explicit(ax, coeffs, interval, hull=False, polygon=False, color="0.65", alpha=0.6)
     plot_explicit(ax, step.coeffs, step.interval, color=f"C{step.order}")
     mark_roots(ax, step.roots, label=None)
-    name = "f" + "′" * step.order if step.order <= 3 else f"f^({step.order})"
+    name = derivative_name(step.order)
     a, b = step.interval
-    changes = f"{step.variations} sign change{'s' if step.variations != 1 else ''}"
-    ax.set_title(f"{name} on [{a:.3g}, {b:.3g}], {changes}:\n{step.action}", fontsize=8)
+    action = f"split at the roots of {derivative_name(step.order + 1)}" if step.action.startswith("split") else (
+        step.action)
+    found = ""
+    if len(step.roots) == 1:
+        found = f", at {step.roots[0]:.4g}" if step.action == "one root" else f", root {step.roots[0]:.4g}"
+    ax.set_title(f"{name} on [{a:.3g}, {b:.3g}], V = {step.variations}:\n{action}{found}", fontsize=9)
     return ax
+
+
+def derivative_name(order: int) -> str:
+    """f, f′, f″, f‴, then f^(4), ...: the name of a derivative in titles and legends."""
+    return "f" + "′" * order if order <= 3 else f"f^({order})"
 
 
 def plot_root_errors(ax, exact, found: dict) -> Axes:

@@ -1,9 +1,11 @@
 """Explorers of chapter 9 of the notes (root finding in Bernstein form).
 
 A stepper through convex hull marching (Figure 9.1) on a choice of
-polynomials, among them the double root where the march crawls; the
-conditioning claim of [FR87] measured on Wilkinson-type roots with a degree
-slider; and a line sweeping across the rational quartic of §7.7.8, with the
+polynomials, among them the double root where the march crawls, with the
+choice of stepping to the control polygon instead of the hull (to watch that
+rule jump a root); the conditioning claim of [FR87] measured on
+Wilkinson-type roots with a degree slider, each error against its bound
+η K(r); and a line sweeping across the rational quartic of §7.7.8, with the
 explicit curve whose roots are the intersections.
 """
 
@@ -17,6 +19,7 @@ import numpy as np
 from cagd_course.examples import notes_example
 from cagd_ref._validation import as_vector
 from cagd_ref.bezier import to_homogeneous
+from cagd_ref.polynomials import bernstein_horner, horner
 from cagd_ref.roots import (
     bernstein_from_roots,
     bernstein_roots,
@@ -45,6 +48,7 @@ __all__ = [
 # the ends, a slow simple root (a far coefficient dwarfs the slope) and a double root (the crawl).
 MARCH_PRESETS = {
     "Figure 9.1 (course quartic)": notes_example("09.hull_marching").inputs["coeffs"],
+    "<1, -1, 2, -3>: hull against polygon": np.array([1.0, -1.0, 2.0, -3.0]),
     "the pitfall: a linear f": notes_example("09.pitfall").inputs["coeffs"],
     "roots at both ends": np.array([0.0, 1.0, -1.0, 0.0]),
     "§7.3: curve ∩ circle": notes_example("07.circle_curve").results["bernstein"],
@@ -52,9 +56,11 @@ MARCH_PRESETS = {
     "a double root: the crawl": bernstein_from_roots([0.3, 0.3, 0.7]),
 }
 EVENTS = {"step": "step", "root": "root found", "end": "no more roots", "stalled": "still crawling"}
-MARCH_SHOWN = 60  # steps the slider reaches; the march is cut there (a double root would go on for ever)
+RULES = {"convex hull": "hull", "control polygon (wrong)": "polygon"}
+MARCH_SHOWN = 100  # steps the slider reaches; the march is cut there (a double root would go on for ever)
 DEGREES = (2, 25)
 BERNSTEIN, POWER = "bernstein_roots (Bernstein form)", "numpy.roots (power form)"
+ETA = 2.0**-53  # the unit round-off of doubles
 
 
 # ---------------------------------------------------------------- convex hull marching
@@ -73,17 +79,19 @@ class HullMarchExplorer(Explorer):
             "polynomial": widgets.Dropdown(description="f", options=list(self.presets),
                                            layout=widgets.Layout(width="300px")),
             "step": _slider(widgets.IntSlider, "step k", min=0, max=MARCH_SHOWN, value=0),
+            "rule": widgets.Dropdown(description="step to", options=list(RULES),
+                                     layout=widgets.Layout(width="300px")),
         }
         super().__init__(controls)
 
     @staticmethod
     @cache
-    def _march(coeffs: tuple) -> tuple:
-        return tuple(hull_march_steps(np.array(coeffs), max_steps=MARCH_SHOWN))
+    def _march(coeffs: tuple, rule: str = "hull") -> tuple:
+        return tuple(hull_march_steps(np.array(coeffs), max_steps=MARCH_SHOWN, rule=rule))
 
-    def compute(self, polynomial: str, step: int) -> dict:
+    def compute(self, polynomial: str, step: int, rule: str = "convex hull") -> dict:
         coeffs = self.presets[polynomial]
-        steps = self._march(tuple(coeffs))
+        steps = self._march(tuple(coeffs), RULES[rule])
         k = min(step, len(steps) - 1)
         starts = np.array([s.start for s in steps[: k + 1]])
         moves = np.diff(starts)
@@ -92,6 +100,7 @@ class HullMarchExplorer(Explorer):
         ratio = float(moves[-1] / moves[-2]) if same_root else None
         return {
             "polynomial": polynomial,
+            "rule": rule,
             "coeffs": coeffs,
             "steps": steps,
             "step": k,
@@ -111,7 +120,9 @@ class HullMarchExplorer(Explorer):
         ax.set_ylim(min(low, 0) - room, max(high, 0) + room)
         ax.legend(fontsize=8, loc="best")
         event = EVENTS[state["event"]]
-        ax.set_title(f"hull marching, k = {state['step']} of {len(state['steps']) - 1}: {event}", fontsize=10)
+        to = "hull" if RULES[state["rule"]] == "hull" else "polygon"
+        ax.set_title(f"marching to the {to}, k = {state['step']} of {len(state['steps']) - 1}: {event}",
+                     fontsize=10)
 
     def describe(self, state: dict) -> str:
         k, steps = state["step"], state["steps"]
@@ -122,17 +133,20 @@ class HullMarchExplorer(Explorer):
         table = f"<table><tr><th>k</th><th>t_k</th><th>f(t_k)</th><th></th></tr>{rows}</table>"
         found = ", ".join(f"{t:.12g}" for t in state["roots"]) or "none yet"
         ratio = f"<br>step ratio {state['ratio']:.3f}" if state["ratio"] is not None else ""
-        return f"{table}roots: {found}{ratio}"
+        truth = ", ".join(f"{t:.12g}" for t in bernstein_roots(state["coeffs"])) or "none"
+        return f"{table}roots: {found}{ratio}<br>the roots (bernstein_roots): {truth}"
 
 
 def hull_march_explorer(coeffs=None) -> HullMarchExplorer:
-    """Dropdown `polynomial` and slider `step` (0..60): the march of §9.1 step by step. Notes §9.1, Figure 9.1.
+    """Dropdowns `polynomial` and `rule`, slider `step` (0..100): the march of §9.1 step by step. Notes §9.1, Fig. 9.1.
 
     coeffs: Bernstein coefficients (n+1,) on [0, 1], offered first as "your
     polynomial". Presets: the course's quartic standing in for Figure 9.1, the
-    linear pitfall, roots at both ends, §7.3's curve ∩ circle, a slow simple
-    root and a double root (where the march crawls). `update` returns
-    {"polynomial", "coeffs", "steps" (the `MarchStep`s, cut at 60 per root),
+    cubic <1, -1, 2, -3> (whose control polygon makes a march jump its root),
+    the linear pitfall, roots at both ends, §7.3's curve ∩ circle, a slow
+    simple root and a double root (where the march crawls). `rule` steps to
+    the "convex hull" (the algorithm) or to the "control polygon (wrong)".
+    `update` returns {"polynomial", "rule", "coeffs", "steps" (the `MarchStep`s, cut at 100 per root),
     "step" (k shown), "start" (t_k), "crossing" (t_(k+1) or None), "event",
     "roots" (found so far), "value" (f(t_k) of the current piece), "ratio" (of
     the last two step lengths, or None)}.
@@ -156,7 +170,12 @@ def root_errors(found, exact) -> np.ndarray:
 def _wilkinson_run(degree: int) -> dict:
     bernstein, power, exact = wilkinson_polynomial(degree)
     found = {BERNSTEIN: bernstein_roots(bernstein), POWER: np.roots(power[::-1])}
-    return {"exact": exact, "found": found, "errors": {name: root_errors(f, exact) for name, f in found.items()}}
+    # The condition number of each root, K(r) = Σ |c_i φ_i(r)| / |w'(r)|, with w'(r_k) = Π_(j≠k) (r_k - r_j).
+    slopes = np.abs([np.prod(r - np.delete(exact, k)) for k, r in enumerate(exact)])
+    condition = {BERNSTEIN: bernstein_horner(np.abs(bernstein), exact) / slopes,
+                 POWER: horner(np.abs(power), exact) / slopes}
+    return {"exact": exact, "found": found, "errors": {name: root_errors(f, exact) for name, f in found.items()},
+            "condition": condition}
 
 
 class ConditioningExplorer(TwoPanels, Explorer):
@@ -177,12 +196,16 @@ class ConditioningExplorer(TwoPanels, Explorer):
             "exact": run["exact"],
             "found": run["found"],
             "errors": run["errors"],
+            "condition": run["condition"],
             "largest": largest,
             "ratio": largest[POWER] / max(largest[BERNSTEIN], np.finfo(float).tiny),
         }
 
     def draw(self, ax, state: dict) -> None:
         plot_root_errors(ax, state["exact"], state["found"])
+        for (name, condition), color in zip(state["condition"].items(), ("C0", "C3")):
+            basis = "Bernstein" if name == BERNSTEIN else "power"
+            ax.plot(state["exact"], ETA * condition, "--", color=color, linewidth=1.0, label=f"η·K(r), {basis}")
         ax.set_xlim(0, 1)
         ax.set_ylim(1e-17, 1)
         ax.legend(fontsize=8, loc="upper left")
@@ -197,17 +220,21 @@ class ConditioningExplorer(TwoPanels, Explorer):
         hide_from_legend(lower)  # the same two series as above: the legend there names them
 
     def describe(self, state: dict) -> str:
-        largest = state["largest"]
+        largest, condition = state["largest"], state["condition"]
         return (f"degree {state['degree']}: largest error {largest[BERNSTEIN]:.1e} (Bernstein), "
-                f"{largest[POWER]:.1e} (power form)<br>the power form is {state['ratio']:.1e} times worse")
+                f"{largest[POWER]:.1e} (power form)<br>the power form is {state['ratio']:.1e} times worse; "
+                f"largest η·K(r): {ETA * condition[BERNSTEIN].max():.1e} (Bernstein), "
+                f"{ETA * condition[POWER].max():.1e} (power)")
 
 
 def conditioning_explorer(degree: int = 20) -> ConditioningExplorer:
     """Slider `degree` (2..25): the roots k/(n+1) found from the Bernstein and the power form. Notes ch. 9 ([FR87]).
 
     Both coefficient lists are the correctly rounded exact ones
-    (`cagd_ref.roots.wilkinson_polynomial`). `update` returns {"degree",
-    "exact" (n,), "found" {method: roots}, "errors" {method: (n,)}, "largest"
+    (`cagd_ref.roots.wilkinson_polynomial`). The dashed lines are η K(r), the
+    bound on each root's error from the condition number of the chapter.
+    `update` returns {"degree", "exact" (n,), "found" {method: roots},
+    "errors" {method: (n,)}, "condition" {method: (n,) K(r)}, "largest"
     {method: float}, "ratio" (power error / Bernstein error)}.
     """
     return ConditioningExplorer(degree)

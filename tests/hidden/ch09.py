@@ -155,7 +155,7 @@ def hull_march_cases(rng):
         Case(NOTES, (CIRCLE_CURVE,), visible=True),
         Case(NOTES, (FROM_ROOTS.results["coeffs"],), {"interval": tuple(FROM_ROOTS.inputs["interval"])}, visible=True),
         Case(EDGE, ([-0.87, 0.51],), visible=True),
-        Case(EDGE, ([1.0, -1.0, 2.0, -3.0],), visible=True),  # the polygon crosses at 0.8, the hull at 0.3
+        Case(EDGE, ([1.0, -1.0, 2.0, -3.0],), visible=True),  # a march to the polygon jumps the root 0.596 (to 0.8)
         Case(EDGE, ([1.0, 2.0, 3.0],), visible=True),  # no root
         Case(EDGE, ([3.0],), visible=True),  # a constant
         Case(EDGE, ([2.0, -1.0, -1.0, 2.0],), {"interval": (-1.0, 1.0)}, visible=True),
@@ -273,13 +273,13 @@ EXERCISES = [
         reference=roots.bernstein_from_roots,
         cases=bernstein_from_roots_cases,
         compare=close(1e-9, 1e-9),
-        hint="On [t0, t1] the factor t - r has the Bernstein coefficients <t0 - r, t1 - r>: start from <leading> "
+        hint="On [a, b] the factor t - r has the Bernstein coefficients <a - r, b - r>: start from <leading> "
         "and multiply by one factor after another with the product formula (exercise 9.1).",
         rules={
             EDGE: "`roots`: shape `(k,)`, any real numbers (inside the interval or not, repeated or not); `k = 0` "
                 "is allowed and gives the constant `[leading]`.",
-            BAD: "Raise a `ValueError` when `roots` is not one-dimensional or `interval` is not a pair $(t_0,t_1)$ "
-                "with $t_0<t_1$.",
+            BAD: "Raise a `ValueError` when `roots` is not one-dimensional or `interval` is not a pair $(a,b)$ "
+                "with $a<b$.",
         },
     ),
     Exercise(
@@ -301,15 +301,16 @@ EXERCISES = [
         reference=roots.hull_march,
         cases=hull_march_cases,
         compare=close(0.0, 1e-9),
-        hint="Divide out roots at t1 first (y_n = 0: g_i = n y_i / (n - i)). Then from a = 0: if y_0 is zero to "
-        "rounding, record a and deflate; else c = the leftmost crossing of the hull of (i/n, y_i) with the axis "
-        "(all pairs of points on opposite sides, not just neighbours), t = a + (1 - a) c, split at c and keep the "
-        "right part; a step <= tol, a value zero to rounding or a sign change is a root at t (deflate it).",
+        hint="Divide out roots at the right end first (y_n = 0: g_i = n y_i / (n - i)). Then from t_0 = 0: if y_0 "
+        "is zero to rounding, record t_k and deflate; else c = the leftmost crossing of the hull of (i/n, y_i) with "
+        "the axis (all pairs of points on opposite sides, not just neighbours), t_(k+1) = t_k + (1 - t_k) c, split "
+        "at c and keep the right part; a step <= tol, a value zero to rounding or a sign change is a root at "
+        "t_(k+1) (deflate it). Map the roots from [0, 1] to [a, b] at the end.",
         rules={
             EDGE: "The tests use polynomials whose roots inside the interval are simple and well separated",
             ENDS: "one per deflation, so a double root at an end comes back twice.",
             BAD: "Raise a `ValueError` for coefficients that are not a non-empty one-dimensional array, for the "
-                "zero polynomial (all coefficients 0), for an interval without $t_0<t_1$ and for `tol` outside "
+                "zero polynomial (all coefficients 0), for an interval without $a<b$ and for `tol` outside "
                 "$(0,1)$.",
         },
     ),
@@ -323,11 +324,11 @@ EXERCISES = [
         "return each root once, sorted, mapped to the interval.",
         rules={
             EDGE: "Return the roots as a sorted array `(k,)`, possibly empty, **each root once**",
-            ENDS: "a coefficient $y_0=0$ or $y_n=0$ is a root at $t_0$ or $t_1$ (even when the other half of the "
+            ENDS: "a coefficient $y_0=0$ or $y_n=0$ is a root at $a$ or $b$ (even when the other half of the "
                 "search finds it too, and even when it is a double root, as for $\\langle0,0,1\\rangle$).",
             WILKINSON: "the tests include the Wilkinson-type polynomial",
             BAD: "Raise a `ValueError` for coefficients that are not a non-empty one-dimensional array, for the "
-                "zero polynomial, for an interval without $t_0<t_1$ and for `tol` outside $(0,1)$.",
+                "zero polynomial, for an interval without $a<b$ and for `tol` outside $(0,1)$.",
         },
     ),
     Exercise(

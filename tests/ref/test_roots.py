@@ -26,8 +26,12 @@ from cagd_ref.roots import (
     deflate,
     hull_crossing,
     hull_march,
+    hull_march_plain,
     hull_march_steps,
     line_curve_intersection,
+    newton_in_bracket,
+    one_root_per_cluster,
+    polygon_crossing,
     sign_variations,
     wilkinson_polynomial,
 )
@@ -37,7 +41,8 @@ T = sp.symbols("t")
 
 def test_public_names_are_all_tested():
     assert set(roots.__all__) == {
-        "hull_crossing", "sign_variations", "deflate", "hull_march", "hull_march_steps", "bcom_roots",
+        "hull_crossing", "polygon_crossing", "sign_variations", "deflate", "hull_march", "hull_march_plain",
+        "hull_march_steps", "bcom_roots",
         "bcom_steps", "bernstein_roots", "bernstein_roots_plain", "bernstein_from_roots",
         "line_curve_intersection", "wilkinson_polynomial",
     }
@@ -97,6 +102,48 @@ def test_hull_crossing_is_the_exact_hull_not_the_fan_from_the_first_point():
     lo, hi = hull_crossing([10.0, 0.001, -1.0])
     assert lo == pytest.approx(0.5 + 0.5 * 0.001 / 1.001) and hi == pytest.approx(10 / 11)
     assert all(lo <= r <= hi for r in exact_roots([10, Fraction(1, 1000), -1]))
+
+
+def test_the_polygon_crosses_where_its_legs_do_and_is_no_bound_on_the_roots():
+    # <1, -1, 2, -3>: the legs cross at 1/6, 4/9 and 4/5; the one root is 0.596, the hull starts at 1/6.
+    coeffs = [1.0, -1.0, 2.0, -3.0]
+    assert polygon_crossing(coeffs) == pytest.approx(1 / 6, abs=1e-15)
+    assert polygon_crossing([2.0, 1.0, 0.0, -1.0]) == pytest.approx(2 / 3)  # a control point on the axis
+    assert polygon_crossing([1.0, 0.5, 2.0]) is None and polygon_crossing([0.0]) == 0.0
+    # After two steps to the polygon's crossing the piece on [t2, 1] crosses at 0.8, beyond the root:
+    # marching to the polygon would step over it.
+    t, piece = 0.0, np.array(coeffs)
+    for _ in range(2):
+        c = polygon_crossing(piece)
+        t, piece = t + (1 - t) * c, explicit_split(piece, c)
+    assert t == pytest.approx(0.337777777778, abs=1e-11)
+    assert t + (1 - t) * polygon_crossing(piece) == pytest.approx(0.8, abs=1e-14)
+    assert t < hull_march(coeffs)[0] < 0.8
+    rng = np.random.default_rng(17)
+    misses = 0
+    for _ in range(100):  # the hull's crossing never passes a root; the polygon's sometimes does
+        c = rng.normal(size=int(rng.integers(2, 8)))
+        found = bernstein_roots(c)
+        if found.size:
+            assert hull_crossing(c)[0] <= found[0] + 1e-12
+            misses += polygon_crossing(c) > found[0] + 1e-9
+    assert misses > 0
+
+
+def test_the_march_steps_can_follow_the_polygon_to_show_the_jump():
+    steps = hull_march_steps([1.0, -1.0, 2.0, -3.0], rule="polygon")
+    crossings = [s.crossing for s in steps if s.crossing is not None]
+    np.testing.assert_allclose(crossings, [1 / 6, 0.337777777778, 0.8], atol=1e-12)
+    assert steps[2].event == "root" and steps[2].root == pytest.approx(0.8)  # the wrong "root": a sign change
+    with pytest.raises(ValueError, match="^rule"):
+        hull_march_steps([1.0, -1.0], rule="legs")
+
+
+def explicit_split(coeffs, c):
+    """The right part of a split at c (de Casteljau on the coefficients)."""
+    from cagd_ref.bezier import subdivide
+
+    return subdivide(np.asarray(coeffs, dtype=float)[:, None], c)[1][:, 0]
 
 
 def test_sign_variations_bound_the_roots_with_their_parity():
@@ -210,6 +257,30 @@ def test_hull_march_agrees_with_numpy_on_random_simple_roots():
         coeffs, inner = random_simple(rng)
         np.testing.assert_allclose(hull_march(coeffs), inner, atol=1e-9)
         np.testing.assert_allclose(hull_march(coeffs), power_roots(coeffs), atol=1e-8)
+
+
+def test_the_plain_march_is_the_same_algorithm():
+    rng = np.random.default_rng(5)
+    cases = [random_simple(rng)[0] for _ in range(40)]
+    cases += [np.array(c) for c in ([-0.87, 0.51], [0.0, 1.0, -1.0, 0.0], [0.0, 0.0, 1.0], [1.0, 0.0, 0.0],
+                                    [1.0, 2.0, 3.0], [3.0], [1.0, -1.0, 2.0, -3.0], [-1.99, 1.0])]
+    cases.append(notes_example("07.circle_curve").results["bernstein"])
+    for coeffs in cases:
+        np.testing.assert_allclose(hull_march_plain(coeffs), hull_march(coeffs), atol=1e-12)
+    example = notes_example("09.from_roots")
+    np.testing.assert_allclose(hull_march_plain(example.results["coeffs"], interval=example.inputs["interval"]),
+                               example.inputs["roots"], atol=1e-11)
+    with pytest.raises(RuntimeError, match="multiple root"):
+        hull_march_plain(bernstein_from_roots([0.3, 0.3, 0.7]), max_steps=500)
+
+
+def test_newton_in_a_bracket_and_one_root_per_cluster():
+    coeffs = bernstein_from_roots([0.3, 1.4, -0.5])
+    root = newton_in_bracket(coeffs, (0.0, 1.0), (coeffs[0], coeffs[-1]), 1e-12)
+    assert root == pytest.approx(0.3, abs=1e-15)
+    assert one_root_per_cluster([(0.5, 0.5), (0.2, 0.3), (0.3 + 1e-13, 0.31), (0.9, 1.0)], 1e-12).tolist() == [
+        pytest.approx(0.255), 0.5, 1.0]
+    assert one_root_per_cluster([], 1e-12).size == 0
 
 
 def test_hull_march_maps_its_interval():
@@ -382,7 +453,7 @@ def test_a_tangency_comes_back_once_and_a_near_miss_not_at_all():
         ({"coeffs": [1.0, -1.0], "tol": 2.0}, "^tol"),
     ],
 )
-@pytest.mark.parametrize("solver", [bernstein_roots, bernstein_roots_plain, hull_march, bcom_roots])
+@pytest.mark.parametrize("solver", [bernstein_roots, bernstein_roots_plain, hull_march, hull_march_plain, bcom_roots])
 def test_bad_input_is_rejected_with_the_argument_named(solver, kwargs, match):
     with pytest.raises((ValueError, TypeError), match=match):
         solver(**kwargs)

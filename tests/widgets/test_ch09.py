@@ -38,7 +38,7 @@ def test_the_march_explorer_retraces_the_chapter_example():
     state = explorer.update(step=MARCHING.results["k"] - 1)  # the sixth step declares the first root
     assert state["event"] == "root"
     np.testing.assert_allclose(state["roots"], MARCHING.results["roots"][:1], atol=1e-12)
-    last = explorer.update(step=60)  # past the end: the last step is shown
+    last = explorer.update(step=100)  # past the end: the last step is shown
     assert last["event"] == "end" and last["step"] == len(last["steps"]) - 1
     np.testing.assert_allclose(last["roots"], hull_march(MARCHING.inputs["coeffs"]), atol=1e-14)
 
@@ -46,7 +46,7 @@ def test_the_march_explorer_retraces_the_chapter_example():
 def test_the_step_ratio_shows_linear_convergence_and_the_crawl():
     explorer = widgets.hull_march_explorer()
     simple = explorer.update(polynomial="Figure 9.1 (course quartic)", step=15)["ratio"]
-    crawl = explorer.update(polynomial="a double root: the crawl", step=60)
+    crawl = explorer.update(polynomial="a double root: the crawl", step=100)
     assert 0.05 < simple < 0.5
     assert crawl["event"] == "stalled" and crawl["ratio"] > 0.9 and crawl["roots"].size == 0
     assert 0.28 < crawl["start"] < 0.3
@@ -57,10 +57,22 @@ def test_the_pitfall_preset_finds_its_root_in_one_step():
     assert state["event"] == "root" and state["crossing"] == pytest.approx(1.99 / 2.99, abs=1e-15)
 
 
+def test_stepping_to_the_control_polygon_jumps_the_root_of_the_cubic():
+    explorer = widgets.hull_march_explorer()
+    polygon = explorer.update(polynomial="<1, -1, 2, -3>: hull against polygon", rule="control polygon (wrong)",
+                              step=100)
+    assert [round(s.start, 6) for s in polygon["steps"][:3]] == [0.0, round(1 / 6, 6), 0.337778]
+    np.testing.assert_allclose(polygon["roots"], [0.8])  # the wrong "root", past the true one
+    assert "polygon" in explorer.ax.get_title()
+    hull = explorer.update(rule="convex hull")
+    np.testing.assert_allclose(hull["roots"], hull_march([1.0, -1.0, 2.0, -3.0]), atol=1e-12)
+    assert "0.596013393" in explorer.describe(hull)
+
+
 def test_the_march_explorer_takes_a_polynomial_of_ones_own():
     explorer = widgets.hull_march_explorer([0.5, -1.0, 1.0])
     assert explorer.values["polynomial"] == "your polynomial"
-    state = explorer.update(step=60)
+    state = explorer.update(step=100)
     np.testing.assert_allclose(state["roots"], hull_march([0.5, -1.0, 1.0]), atol=1e-12)
     with pytest.raises(ValueError, match="^coeffs"):
         widgets.hull_march_explorer([[1.0, 2.0]])
@@ -77,6 +89,11 @@ def test_the_conditioning_explorer_measures_the_claim():
     bernstein, _, exact = wilkinson_polynomial(state["degree"])
     np.testing.assert_array_equal(state["found"]["bernstein_roots (Bernstein form)"], bernstein_roots(bernstein))
     np.testing.assert_allclose(state["exact"], exact)
+    eta = 2.0**-53
+    for name, errors in state["errors"].items():  # every error within a small multiple of its bound η K(r)
+        assert np.all(errors <= 50 * eta * state["condition"][name])
+    assert np.all(state["condition"]["bernstein_roots (Bernstein form)"]
+                  <= state["condition"]["numpy.roots (power form)"])  # Farouki and Rajan
     low = explorer.update(degree=3)
     assert low["exact"].shape == (3,) and all(e.max() < 1e-13 for e in low["errors"].values())
     assert len(explorer.largest["numpy.roots (power form)"]) == 24
@@ -142,7 +159,8 @@ def test_march_and_derivative_panels_are_labelled():
     assert any("t_{3}" in text.get_text() for text in ax.texts)
     coeffs = [-1.0, 2.0, -2.0, 1.0]
     look = bcom_steps(coeffs)[0]
-    assert "sign change" in plot_derivative_look(_axes(), look, coeffs).get_title()
+    title = plot_derivative_look(_axes(), look, coeffs).get_title()
+    assert f"V = {look.variations}" in title and "split at the roots of f′" in title
     assert len(mark_roots(_axes(), [0.2, 0.4]).lines) == 1
 
 

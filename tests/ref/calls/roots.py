@@ -18,4 +18,6 @@ CALLS = {
     "bernstein_from_roots": Call(([2.5, 3.0, 4.75],), dict(interval=(2.0, 5.0), leading=2.0)),
     "line_curve_intersection": Call((POINTS, [6.0, -8.0, 40.0]), dict(weights=[1.0, 1.0, 2.0, 3.0, 3.0])),
     "wilkinson_polynomial": Call((6,)),
+    "hull_march_plain": Call((QUARTIC,), dict(interval=(0.0, 2.0), tol=1e-10)),
+    "polygon_crossing": Call(([1.0, -1.0, 2.0, -3.0],)),
 }
