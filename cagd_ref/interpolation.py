@@ -5,9 +5,15 @@ unique; this module finds it in every form the notes teach: coefficients by
 solving linear systems (power and Bernstein bases, and conditions on
 derivatives), Lagrange's basis, Newton's divided differences (and the
 row-by-row extension of their table), Neville's triangle of two-point
-interpolations, the cubic Hermite curve and its Bézier points. It also
-bounds the interpolation error: Cauchy's remainder, Chebyshev nodes, and how
-many chords flatten a Bézier curve to within a tolerance.
+interpolations, the cubic Hermite curve and its Bézier points. Beyond the
+notes: the barycentric formula, confluent divided differences (repeated
+nodes carry derivatives), and the Lebesgue function. It also bounds the
+interpolation error: Cauchy's remainder, Chebyshev nodes, and how many chords
+flatten a Bézier curve to within a tolerance.
+
+The graded functions are tuned for many parameters; `lagrange_eval_plain`,
+`newton_eval_plain` and `neville_plain` are the plain textbook forms the
+chapter shows, and the tests prove that they agree.
 
 Nodes `ts` are a 1-D array (n+1,). Data are `points` (n+1, d) or scalar
 values (n+1,), as coefficient arrays are in `cagd_ref.polynomials`. A
@@ -39,18 +45,27 @@ from .bezier import bernstein_matrix, de_casteljau
 from .polynomials import _finish
 
 __all__ = [
+    "checked_nodes",
+    "checked_data",
+    "checked_hermite_data",
     "power_interpolation",
     "bernstein_interpolation",
     "undetermined_coefficients",
     "lagrange_basis",
     "lagrange_eval",
     "lagrange_eval_plain",
+    "barycentric_weights",
+    "barycentric_eval",
+    "lebesgue_function",
     "divided_differences",
     "divided_difference_table",
     "next_table_row",
     "newton_eval",
+    "newton_eval_plain",
+    "confluent_divided_differences",
     "newton_to_power",
     "neville",
+    "neville_plain",
     "neville_triangle",
     "node_polynomial",
     "node_polynomial_max",
@@ -84,8 +99,12 @@ def _blocks(count: int, width: int):
 # --- input checking ---------------------------------------------------------------------
 
 
-def _nodes(ts, distinct: bool = True, name: str = "ts", minimum: int = 1) -> np.ndarray:
-    """Nodes as a 1-D float array of at least `minimum` values, pairwise distinct unless told otherwise."""
+def checked_nodes(ts: ArrayLike, distinct: bool = True, name: str = "ts", minimum: int = 1) -> np.ndarray:
+    """Nodes as a fresh 1-D float array of at least `minimum` values, distinct unless told otherwise. Notes §10.1.
+
+    A clear ValueError names the argument for the wrong shape, too few nodes, NaN
+    or infinity, and (with `distinct`) for a node that appears twice.
+    """
     nodes = as_float_array(ts, name)
     if nodes.ndim != 1 or len(nodes) < minimum:
         raise ValueError(f"{name}: expected a 1-D array of at least {minimum} node(s), got shape {nodes.shape}")
@@ -105,10 +124,13 @@ def _data(values, count: int, name: str) -> np.ndarray:
     return data
 
 
-def _nodes_and_data(ts, values, name: str) -> tuple[np.ndarray, np.ndarray]:
-    """Distinct nodes (n+1,) and data with one entry per node."""
-    nodes = _nodes(ts)
-    return nodes, _data(values, len(nodes), name)
+def checked_data(ts: ArrayLike, points: ArrayLike, name: str = "points") -> tuple[np.ndarray, np.ndarray]:
+    """Interpolation data, checked: distinct nodes (n+1,) and data (n+1, d) or (n+1,), one entry per node. Notes §10.1.
+
+    Fresh float copies; `name` is the data's argument name in error messages.
+    """
+    nodes = checked_nodes(ts)
+    return nodes, _data(points, len(nodes), name)
 
 
 # --- undetermined coefficients (§10.1, §10.7) ------------------------------------------------
@@ -135,7 +157,7 @@ def power_interpolation(ts: ArrayLike, points: ArrayLike) -> np.ndarray:
     >>> (example * 3).round(9).tolist()   # x = 18t - 48t² + 32t³, y = 12t - (56/3)t² + (32/3)t³
     [[0.0, 0.0], [54.0, 36.0], [-144.0, -56.0], [96.0, 32.0]]
     """
-    nodes, data = _nodes_and_data(ts, points, "points")
+    nodes, data = checked_data(ts, points, "points")
     return np.linalg.solve(np.vander(nodes, increasing=True), data)
 
 
@@ -150,7 +172,7 @@ def bernstein_interpolation(ts: ArrayLike, points: ArrayLike, interval: ArrayLik
     >>> (bernstein_interpolation([0, 0.25, 0.75, 1], [(0, 0), (2, 2), (0, 3), (2, 4)]) * 9).round(9).tolist()
     [[0.0, 0.0], [54.0, 36.0], [-36.0, 16.0], [18.0, 36.0]]
     """
-    nodes, data = _nodes_and_data(ts, points, "points")
+    nodes, data = checked_data(ts, points, "points")
     t0, t1 = as_interval(interval)
     return np.linalg.solve(bernstein_matrix(len(nodes) - 1, (nodes - t0) / (t1 - t0)), data)
 
@@ -165,7 +187,7 @@ def undetermined_coefficients(ts: ArrayLike, orders: ArrayLike, values: ArrayLik
     instance, fail whenever 2a² + 2ab + 2b² - 3(a + b)(c + d) + 6cd = 0
     (Birkhoff interpolation: P(0), P(1), P'(0), P'(2/3) is such a case).
     """
-    params = _nodes(ts, distinct=False)
+    params = checked_nodes(ts, distinct=False)
     order = np.asarray(orders)
     if order.shape != params.shape or order.dtype.kind not in "iu" or np.any(order < 0):
         raise ValueError(f"orders: expected {len(params)} non-negative integers, one per condition, got {orders!r}")
@@ -216,7 +238,7 @@ def lagrange_basis(ts: ArrayLike, t: ArrayLike) -> np.ndarray:
     but are not all positive between the nodes (so there is no convex hull
     property).
     """
-    nodes = _nodes(ts)
+    nodes = checked_nodes(ts)
     tau, scalar = as_parameter(t)
     basis = _lagrange_matrix(nodes, tau)
     return basis[0] if scalar else basis
@@ -241,7 +263,7 @@ def lagrange_eval(ts: ArrayLike, points: ArrayLike, t: ArrayLike):
     >>> lagrange_eval([0, 1, 3, 4], [(0, 0), (3, 3), (5, 3), (7, 0)], [2.0]).round(12).tolist()
     [[4.166666666667, 4.0]]
     """
-    nodes, data = _nodes_and_data(ts, points, "points")
+    nodes, data = checked_data(ts, points, "points")
     tau, scalar = as_parameter(t)
     columns = data.reshape(len(nodes), -1)
     values = np.empty((len(tau), columns.shape[1]))
@@ -251,22 +273,103 @@ def lagrange_eval(ts: ArrayLike, points: ArrayLike, t: ArrayLike):
 
 
 def lagrange_eval_plain(ts: ArrayLike, points: ArrayLike, t: ArrayLike):
-    """The same as `lagrange_eval`, computed straight from the product formula: n² factors per parameter. Notes §10.2.
+    """The same as `lagrange_eval`, in its plain textbook form: n² factors per parameter. Notes §10.2.
 
-    Each basis function multiplies its n factors (t - t_j) / (t_i - t_j)
-    afresh, as written in the notes; this is the O(n²) cost that §10.5 counts.
+    Column i of the (k, n+1) basis matrix multiplies the n factors
+    (t - t_j) / (t_i - t_j), j ≠ i, for all k parameters at once; one matrix
+    product with the points gives the curve. This is the O(n²) cost that §10.5
+    counts; `lagrange_eval` gets the same values in O(n) per parameter.
+
+    >>> from cagd_ref.interpolation import lagrange_eval_plain
+    >>> (lagrange_eval_plain([0, 0.25, 0.75, 1], [(0, 0), (2, 2), (0, 3), (2, 4)], 0.5) * 3).round(12).tolist()
+    [3.0, 8.0]
     """
-    nodes, data = _nodes_and_data(ts, points, "points")
+    nodes, data = checked_data(ts, points, "points")
     tau, scalar = as_parameter(t)
-    columns = data.reshape(len(nodes), -1)
-    values = np.zeros((len(tau), columns.shape[1]))
-    for i, (node, point) in enumerate(zip(nodes, columns)):
-        basis = np.ones_like(tau)
+    basis = np.ones((len(tau), len(nodes)))  # column i: L_i at every parameter
+    for i, node in enumerate(nodes):
         for j, other in enumerate(nodes):
             if j != i:
-                basis *= (tau - other) / (node - other)
-        values += basis[:, None] * point
-    return _finish(values if data.ndim == 2 else values[:, 0], scalar)
+                basis[:, i] *= (tau - other) / (node - other)
+    values = basis @ data  # (k, d), or (k,) for scalar values
+    if scalar:
+        return values[0] if data.ndim == 2 else float(values[0])
+    return values
+
+
+def barycentric_weights(ts: ArrayLike) -> np.ndarray:
+    """The weights γ_i = 1 / Π_{j≠i} (t_i - t_j) of barycentric interpolation, up to one common factor. Notes §10.5.
+
+    ts: (n+1,) distinct nodes. A common factor of all weights cancels in the
+    barycentric formula, so they are computed for the nodes mapped to an
+    interval of length 4 (which multiplies every γ_i by the same power of the
+    scale and keeps the products representable for many nodes) and divided by
+    the largest |γ_i|. Returns (n+1,).
+
+    Ref: J.-P. Berrut and L. N. Trefethen, Barycentric Lagrange interpolation, SIAM Review 46(3), 2004.
+
+    >>> from cagd_ref.interpolation import barycentric_weights
+    >>> barycentric_weights([0, 1, 2]).tolist()      # 1/2, -1, 1/2, scaled
+    [0.5, -1.0, 0.5]
+    """
+    nodes = checked_nodes(ts)
+    span = nodes.max() - nodes.min()
+    scaled = nodes * (4.0 / span) if span > 0 else nodes
+    differences = scaled[:, None] - scaled[None, :]
+    np.fill_diagonal(differences, 1.0)
+    weights = 1.0 / np.prod(differences, axis=1)
+    return weights / np.abs(weights).max()
+
+
+def barycentric_eval(ts: ArrayLike, points: ArrayLike, t: ArrayLike, weights: ArrayLike | None = None):
+    """The interpolant by the barycentric formula (its second form): O(n) per parameter. Notes §10.5.
+
+    P(t) = Σ_i γ_i P_i / (t - t_i)  /  Σ_i γ_i / (t - t_i), and P(t_i) = P_i at a
+    node. ts: (n+1,) distinct nodes; points: (n+1, d) or (n+1,); weights: the
+    γ_i of `barycentric_weights` (computed when not given; any common factor
+    does not matter). Shapes of t and of the result as in `lagrange_eval`.
+    Accurate between the smallest and the largest node for nodes with a small
+    Lebesgue constant (Higham 2004); far outside it, prefer `lagrange_eval`.
+
+    Ref: J.-P. Berrut and L. N. Trefethen, Barycentric Lagrange interpolation, SIAM Review 46(3), 2004;
+    N. J. Higham, The numerical stability of barycentric Lagrange interpolation, IMA J. Numer. Anal. 24, 2004.
+
+    >>> from cagd_ref.interpolation import barycentric_eval
+    >>> (barycentric_eval([0, 1, 3, 4], [(0, 0), (3, 3), (5, 3), (7, 0)], 2.0) * 6).round(12).tolist()
+    [25.0, 24.0]
+    """
+    nodes, data = checked_data(ts, points, "points")
+    if weights is None:
+        gamma = barycentric_weights(nodes)
+    else:
+        gamma = as_float_array(weights, "weights")
+        if gamma.shape != nodes.shape or np.any(gamma == 0):
+            raise ValueError(f"weights: expected {len(nodes)} non-zero weights, one per node, got {weights!r}")
+    tau, scalar = as_parameter(t)
+    differences = tau[:, None] - nodes[None, :]  # (k, n+1): t - t_i
+    at_node = differences == 0
+    differences[at_node] = 1.0  # those rows are replaced by the data below
+    quotients = gamma / differences  # γ_i / (t - t_i)
+    values = (quotients @ data) / quotients.sum(axis=1).reshape((-1,) + (1,) * (data.ndim - 1))
+    rows, columns = np.nonzero(at_node)
+    values[rows] = data[columns]  # at a node the formula is 0/0 in the limit: the datum itself
+    if scalar:
+        return values[0] if data.ndim == 2 else float(values[0])
+    return values
+
+
+def lebesgue_function(ts: ArrayLike, x: ArrayLike):
+    """Λ(x) = Σ_i |L_i^n(x)|, the Lebesgue function of the nodes ts: float or (k,). Notes §10.6 (course).
+
+    Data errors of at most δ change the interpolant at x by at most Λ(x) δ;
+    its maximum over an interval is the Lebesgue constant. One at every node.
+
+    Ref: L. N. Trefethen, Approximation Theory and Approximation Practice, SIAM 2013, ch. 15.
+    """
+    nodes = checked_nodes(ts)
+    xs, scalar = as_parameter(x, "x")
+    values = np.abs(_lagrange_matrix(nodes, xs)).sum(axis=1)
+    return float(values[0]) if scalar else values
 
 
 # --- Newton (§10.3) ---------------------------------------------------------------------------
@@ -282,7 +385,7 @@ def divided_difference_table(ts: ArrayLike, values: ArrayLike) -> list[np.ndarra
     columns are the Newton coefficients (`divided_differences`), the last
     entries the table's bottom row (see `next_table_row`).
     """
-    nodes, data = _nodes_and_data(ts, values, "values")
+    nodes, data = checked_data(ts, values, "values")
     columns = [data]
     for k in range(1, len(nodes)):
         previous = columns[-1]
@@ -319,7 +422,7 @@ def next_table_row(ts: ArrayLike, row: ArrayLike, tau: float) -> np.ndarray:
     t_1, ..., t_n, τ: repeating the step marches along at n multiply-adds a
     point, as forward differencing does, but to any parameters.
     """
-    nodes = _nodes(ts, distinct=False)
+    nodes = checked_nodes(ts, distinct=False)
     bottom = _data(row, len(nodes), "row")
     tau = as_scalar(tau, "tau")
     n = len(nodes) - 1
@@ -345,7 +448,7 @@ def newton_eval(ts: ArrayLike, coeffs: ArrayLike, t: ArrayLike):
     >>> (newton_eval(ts, coeffs, 2.0) * 6).round(12).tolist()   # P(2) = (25/6, 4)
     [25.0, 24.0]
     """
-    nodes = _nodes(ts, distinct=False, minimum=0)
+    nodes = checked_nodes(ts, distinct=False, minimum=0)
     c = as_coefficients(coeffs)
     if len(nodes) not in (len(c), len(c) - 1):
         raise ValueError(
@@ -365,13 +468,73 @@ def newton_eval(ts: ArrayLike, coeffs: ArrayLike, t: ArrayLike):
     return _finish(values.T if c.ndim == 2 else values[0], scalar)
 
 
+def newton_eval_plain(ts: ArrayLike, coeffs: ArrayLike, t: ArrayLike):
+    """The same as `newton_eval`, in its plain textbook form: the nesting, all parameters at once. Notes §10.3.
+
+    Start with v = c_n; then v = c_k + (t - t_k) v for k = n-1, ..., 0. Nodes,
+    coefficients and shapes as in `newton_eval` (t_n is never used; nodes may
+    repeat).
+
+    >>> from cagd_ref.interpolation import newton_eval_plain
+    >>> (newton_eval_plain([0, 1, 3, 4], [(0, 0), (3, 3), (-2/3, -1), (1/4, 0)], 2.0) * 6).round(12).tolist()
+    [25.0, 24.0]
+    """
+    nodes = checked_nodes(ts, distinct=False, minimum=0)
+    c = as_coefficients(coeffs)
+    if len(nodes) not in (len(c), len(c) - 1):
+        raise ValueError(f"ts: {len(c)} coefficients need {len(c)} or {len(c) - 1} nodes, got {len(nodes)}")
+    tau, scalar = as_parameter(t)
+    u = tau.reshape((-1,) + (1,) * (c.ndim - 1))  # (k, 1) for points, (k,) for scalar values
+    value = np.repeat(c[-1:], len(tau), axis=0)  # v = c_n at every parameter
+    for k in range(len(c) - 2, -1, -1):
+        value = c[k] + (u - nodes[k]) * value
+    if scalar:
+        return value[0] if c.ndim == 2 else float(value[0])
+    return value
+
+
+def confluent_divided_differences(ts: ArrayLike, values: ArrayLike) -> np.ndarray:
+    """Newton coefficients of Hermite data: a node repeated m times carries a value and m-1 derivatives. Notes §10.7.
+
+    ts: (n+1,) nodes in which equal nodes stand next to each other; values:
+    (n+1,) or (n+1, d), where the j-th copy of a node (j = 0, 1, ...) holds the
+    j-th derivative there (SciPy's KroghInterpolator takes data the same way).
+    The table is that of `divided_difference_table`, except that a range of
+    k+1 equal nodes, where the quotient would be 0/0, takes its limit
+    f[t_i, ..., t_i] = f^(k)(t_i) / k!. Returns the top diagonal, the shape of
+    `values`; `newton_eval` evaluates the result with the same nodes.
+
+    >>> from cagd_ref.interpolation import confluent_divided_differences
+    >>> confluent_divided_differences([0, 0, 1, 1], [(0, 0), (3, 9), (4, 0), (3, -9)]).tolist()
+    [[0.0, 0.0], [3.0, 9.0], [1.0, -9.0], [-2.0, 0.0]]
+    """
+    nodes = checked_nodes(ts, distinct=False)
+    data = _data(values, len(nodes), "values")
+    first = np.arange(len(nodes))  # index of the first copy of each node
+    for i in range(1, len(nodes)):
+        if nodes[i] == nodes[i - 1]:
+            first[i] = first[i - 1]
+    if len(np.unique(nodes)) != len(np.unique(first)):
+        raise ValueError(f"ts: equal nodes must stand next to each other, got {nodes.tolist()}")
+    column = data[first]  # f[t_i] = the value at t_i
+    coefficients = [column[0]]
+    for k in range(1, len(nodes)):
+        span = nodes[k:] - nodes[:-k]
+        equal = (span == 0).reshape((-1,) + (1,) * (data.ndim - 1))
+        safe = np.where(span == 0, 1.0, span).reshape(equal.shape)
+        derivative = data[np.minimum(first[:-k] + k, len(nodes) - 1)] / factorial(k)
+        column = np.where(equal, derivative, (column[1:] - column[:-1]) / safe)
+        coefficients.append(column[0])
+    return np.array(coefficients)
+
+
 def newton_to_power(ts: ArrayLike, coeffs: ArrayLike) -> np.ndarray:
     """Ascending power coefficients of the Newton form with nodes ts and coefficients (n+1,) or (n+1, d). Notes §10.3.
 
     The nesting of `newton_eval` carried out on polynomials: start from c_n,
     multiply by (t - t_k) and add c_k, for k = n-1 .. 0.
     """
-    nodes = _nodes(ts, distinct=False, minimum=0)
+    nodes = checked_nodes(ts, distinct=False, minimum=0)
     c = as_coefficients(coeffs)
     if len(nodes) not in (len(c), len(c) - 1):
         raise ValueError(f"ts: {len(c)} coefficients need {len(c)} or {len(c) - 1} nodes, got {len(nodes)}")
@@ -423,7 +586,7 @@ def neville(ts: ArrayLike, points: ArrayLike, t: ArrayLike):
     >>> (neville([0, 1, 3, 4], [(0, 0), (3, 3), (5, 3), (7, 0)], 2.0) * 6).round(12).tolist()   # (25/6, 4)
     [25.0, 24.0]
     """
-    nodes, data = _nodes_and_data(ts, points, "points")
+    nodes, data = checked_data(ts, points, "points")
     tau, scalar = as_parameter(t)
     columns = data.reshape(len(nodes), -1)
     values = np.empty((len(tau), columns.shape[1]))
@@ -434,12 +597,39 @@ def neville(ts: ArrayLike, points: ArrayLike, t: ArrayLike):
     return _finish(values if data.ndim == 2 else values[:, 0], scalar)
 
 
+def neville_plain(ts: ArrayLike, points: ArrayLike, t: ArrayLike):
+    """The same as `neville`, in its plain textbook form: a (k, n+1, d) array, one row less per level. Notes §10.4.
+
+    Level r holds p_(i..i+r)(t) for i = 0..n-r, computed from level r-1 by
+    ((t_(i+r) - t) p_(i..i+r-1) + (t - t_i) p_(i+1..i+r)) / (t_(i+r) - t_i);
+    the single entry of level n is P(t). Nodes, points and shapes as in
+    `lagrange_eval`.
+
+    >>> from cagd_ref.interpolation import neville_plain
+    >>> (neville_plain([0, 1, 3, 4], [(0, 0), (3, 3), (5, 3), (7, 0)], 2.0) * 6).round(12).tolist()
+    [25.0, 24.0]
+    """
+    nodes, data = checked_data(ts, points, "points")
+    tau, scalar = as_parameter(t)
+    trailing = (1,) * (data.ndim - 1)  # one more axis for points than for scalar values
+    u = tau.reshape((-1, 1) + trailing)  # (k, 1, 1)
+    level = np.repeat(data[None], len(tau), axis=0)  # level 0: the points, (k, n+1, d)
+    for r in range(1, len(nodes)):
+        first = nodes[:-r].reshape((1, -1) + trailing)  # t_i
+        last = nodes[r:].reshape((1, -1) + trailing)  # t_(i+r)
+        level = ((last - u) * level[:, :-1] + (u - first) * level[:, 1:]) / (last - first)
+    values = level[:, 0]
+    if scalar:
+        return values[0] if data.ndim == 2 else float(values[0])
+    return values
+
+
 def neville_triangle(ts: ArrayLike, points: ArrayLike, tau: float) -> list[np.ndarray]:
     """Every level of Neville's triangle at a number τ: level r holds p_(i..i+r)(τ), shape (n+1-r, d). Notes §10.4.
 
     Level 0 is a copy of the points ((n+1, d) or (n+1,)); the last level holds P(τ) alone.
     """
-    nodes, data = _nodes_and_data(ts, points, "points")
+    nodes, data = checked_data(ts, points, "points")
     tau = np.array([as_scalar(tau, "tau")])
     columns = data.reshape(len(nodes), -1)
     levels = [level[:, :, 0].T.copy() for level in _neville_levels(nodes, columns, tau)]
@@ -451,7 +641,7 @@ def neville_triangle(ts: ArrayLike, points: ArrayLike, tau: float) -> list[np.nd
 
 def node_polynomial(nodes: ArrayLike, x: ArrayLike):
     """ω(x) = (x - x_0)(x - x_1)...(x - x_n), the node factor of the error (10.1): float or (k,). Notes §10.6."""
-    roots = _nodes(nodes, distinct=False, name="nodes")
+    roots = checked_nodes(nodes, distinct=False, name="nodes")
     xs, scalar = as_parameter(x, "x")
     values = np.prod(xs[:, None] - roots[None, :], axis=1)
     return float(values[0]) if scalar else values
@@ -465,7 +655,7 @@ def node_polynomial_max(nodes: ArrayLike, a: float, b: float) -> float:
     strictly from +∞ to -∞ there, so bisection finds every peak. The largest
     of the peaks inside [a, b] and the values at a and b is the answer.
     """
-    roots = np.sort(_nodes(nodes, distinct=False, name="nodes"))
+    roots = np.sort(checked_nodes(nodes, distinct=False, name="nodes"))
     a, b = as_scalar(a, "a"), as_scalar(b, "b")
     if not a < b:
         raise ValueError(f"a, b: expected a < b, got a = {a}, b = {b}")
@@ -511,7 +701,7 @@ def interpolation_error_bound(nodes: ArrayLike, derivative_bound: float, x: Arra
     nodes: the n+1 interpolation nodes; derivative_bound: M, a bound on the
     (n+1)-th derivative of f over the smallest interval holding x and the nodes.
     """
-    roots = _nodes(nodes, distinct=False, name="nodes")
+    roots = checked_nodes(nodes, distinct=False, name="nodes")
     bound = as_scalar(derivative_bound, "derivative_bound")
     if bound < 0:
         raise ValueError(f"derivative_bound: expected a bound >= 0, got {bound}")
@@ -612,8 +802,8 @@ def hermite_basis(t: ArrayLike) -> np.ndarray:
     return basis[0] if scalar else basis
 
 
-def _hermite_data(p0, p1, d0, d1) -> np.ndarray:
-    """The four Hermite vectors as rows (4, d), all of one dimension."""
+def checked_hermite_data(p0: ArrayLike, p1: ArrayLike, d0: ArrayLike, d1: ArrayLike) -> np.ndarray:
+    """The four Hermite vectors, checked, as rows (4, d), all of one dimension. Notes §10.7."""
     rows = [as_vector(value, name) for value, name in ((p0, "p0"), (p1, "p1"), (d0, "d0"), (d1, "d1"))]
     if len({len(row) for row in rows}) != 1:
         raise ValueError(f"p0, p1, d0, d1: expected vectors of one dimension, got lengths {[len(r) for r in rows]}")
@@ -622,7 +812,7 @@ def _hermite_data(p0, p1, d0, d1) -> np.ndarray:
 
 def hermite_eval(p0: ArrayLike, p1: ArrayLike, d0: ArrayLike, d1: ArrayLike, t: ArrayLike) -> np.ndarray:
     """Point(s) of the cubic with P(0) = p0, P(1) = p1, P'(0) = d0, P'(1) = d1: (d,) or (k, d). Notes §10.7."""
-    data = _hermite_data(p0, p1, d0, d1)
+    data = checked_hermite_data(p0, p1, d0, d1)
     return hermite_basis(t) @ data
 
 
@@ -638,5 +828,5 @@ def hermite_to_bezier(p0: ArrayLike, p1: ArrayLike, d0: ArrayLike, d1: ArrayLike
     >>> hermite_to_bezier([0, 0], [4, 0], [3, 9], [3, -9]).tolist()
     [[0.0, 0.0], [1.0, 3.0], [3.0, 3.0], [4.0, 0.0]]
     """
-    data = _hermite_data(p0, p1, d0, d1)
+    data = checked_hermite_data(p0, p1, d0, d1)
     return np.array([data[0], data[0] + data[2] / 3, data[1] - data[3] / 3, data[1]])

@@ -16,7 +16,7 @@ import ipywidgets as widgets
 import numpy as np
 
 from cagd_ref._validation import as_float_array, as_points, as_vector
-from cagd_ref.approximation import chord_length_parameters
+from cagd_ref.approximation import centripetal_parameters, chord_length_parameters
 from cagd_ref.interpolation import (
     bernstein_interpolation,
     bezier_segments_needed,
@@ -71,7 +71,7 @@ NEWTON_POINTS = np.array([[0.0, 0.0], [3.0, 3.0], [5.0, 3.0], [7.0, 0.0]])
 # The course's flattening and Hermite example: one cubic, two descriptions.
 FLAT_CUBIC = np.array([[0.0, 0.0], [1.0, 3.0], [3.0, 3.0], [4.0, 0.0]])
 SAMPLES = 201
-PARAMETER_MODES = ["sliders", "uniform", "chord length", "Chebyshev"]
+PARAMETER_MODES = ["sliders", "uniform", "chord length", "centripetal", "Chebyshev"]
 NODE_PICK = 0.04  # how close (in t) a click must be to grab a node
 GAP_SAMPLES = 2000  # parameters for the flattening explorer's gap profile, shared among the chords
 
@@ -100,10 +100,12 @@ class _ExtraControls(Explorer):
         return {}
 
 
-def _chord_length_parameters(points) -> np.ndarray:
-    """Chapter 11's chord-length parameters; uniform ones while every point sits on the same spot."""
+def _data_parameters(points, exponent: float = 1.0) -> np.ndarray:
+    """Chapter 11's chord-length (exponent 1) or centripetal (1/2) parameters; uniform ones if all points coincide."""
     try:
-        return chord_length_parameters(points)
+        if exponent == 1.0:
+            return chord_length_parameters(points)
+        return centripetal_parameters(points, exponent)
     except ValueError:
         return np.linspace(0.0, 1.0, len(as_points(points, min_count=2)))
 
@@ -133,12 +135,15 @@ class InterpolationExplorer(TwoPanels, ControlPointEditor, _ExtraControls):
         return controls
 
     def parameters(self, values: dict) -> np.ndarray:
-        """The nodes t_0..t_n of the controls: from the sliders (ends 0 and 1), uniform, chord length or Chebyshev."""
+        """The nodes t_0..t_n of the controls: from the sliders (ends 0 and 1), uniform, chord length, centripetal or
+        Chebyshev."""
         n, mode = self.degree, values["parameters"]
         if mode == "uniform":
             return np.linspace(0.0, 1.0, n + 1)
         if mode == "chord length":
-            return _chord_length_parameters(self.current_points(values))
+            return _data_parameters(self.current_points(values))
+        if mode == "centripetal":
+            return _data_parameters(self.current_points(values), 0.5)
         if mode == "Chebyshev":
             return chebyshev_nodes(0.0, 1.0, n + 1)
         return np.array([0.0] + [values[f"t{i}"] for i in range(1, n)] + [1.0])
@@ -168,7 +173,7 @@ class InterpolationExplorer(TwoPanels, ControlPointEditor, _ExtraControls):
         plot_interpolant(ax, state["ts"], state["points"], interval=(0.0, 1.0))
         if self.values["bezier"]:
             # The end points are data points, labelled with their parameters already.
-            inner = [""] + [f"$B_{{{i}}}$" for i in range(1, self.degree)] + [""]
+            inner = [""] + [f"$\\mathbf{{b}}_{{{i}}}$" for i in range(1, self.degree)] + [""]
             plot_control_polygon(ax, state["bezier"], labels=inner, color="C2", alpha=0.8)
         if self.window is None:
             # The sliders' square and the first Bézier polygon: interpolants' control points stray far.
@@ -191,7 +196,7 @@ class InterpolationExplorer(TwoPanels, ControlPointEditor, _ExtraControls):
         bezier = " ".join(_fmt(p) for p in state["bezier"])
         hull = ("negative basis values: the curve is no convex combination of its data"
                 if state["min_basis"] < -1e-12 else "all basis values >= 0 here")
-        return (f"nodes t = ({ts})<br>{_swatch('C2')} Bézier points B: {bezier}<br>"
+        return (f"nodes t = ({ts})<br>{_swatch('C2')} Bézier points <b>b</b>: {bezier}<br>"
                 f"smallest L<sub>i</sub>(t) on [0, 1]: {state['min_basis']:.3f} ({hull})")
 
     # Dragging the nodes in the lower panel, as plain methods so tests can drive them without a browser.
@@ -233,7 +238,7 @@ def interpolation_explorer(points=None, draggable: bool | None = None) -> Interp
 
     points: (n+1, 2), default the notes' four points (0, 0), (2, 2), (0, 3), (2, 4)
     with t = 0, 1/4, 3/4, 1. `parameters` is "sliders" (t_0 = 0, t_n = 1 and the
-    sliders between), "uniform", "chord length" or "Chebyshev" (the n+1
+    sliders between), "uniform", "chord length", "centripetal" (section 10.1.1) or "Chebyshev" (the n+1
     Chebyshev nodes of [0, 1]); `highlight` picks a basis function to shade,
     `bezier` shows the curve's Bézier polygon. With `draggable` (ipympl) the
     points and the interior nodes can be dragged: `pick`/`move_point` and

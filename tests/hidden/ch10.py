@@ -4,7 +4,8 @@ Fixed cases reuse the notes' worked examples, read from
 cagd_course/examples/ch10.toml: the cubic through (0, 0), (2, 2), (0, 3), (2, 4)
 at t = 0, 1/4, 3/4, 1 (§10.1-10.2), the cubic with P(0), P(1), P(3), P(4) and
 its value at 2 (§10.3-10.4), the nine nodes of Figure 10.5 (§10.6), and the
-course's own flattening and Hermite examples. Edge cases probe one and two
+course's own flattening and Hermite examples (the Hermite cubic also in Newton
+form on the repeated nodes 0, 0, 1, 1, §10.7.2). Edge cases probe one and two
 nodes, unsorted and unit-spaced nodes, scalar values instead of points,
 parameters at the nodes and outside their range, and several dimensions; the
 random cases come from the generator the grader passes in.
@@ -19,6 +20,7 @@ from cagd_course.grading.suite import Case, Exercise, close, exact
 from cagd_ref import interpolation
 
 NOTES = "notes example"
+COURSE = "course example"
 EDGE = "edge cases"
 SHAPES = "scalar vs array t"
 VALUES = "scalar values"
@@ -131,6 +133,9 @@ def newton_eval_cases(rng):
         Case(EDGE, (nts[:-1], coeffs, [2.0, 5.0]), visible=True),  # only the n nodes that enter
         Case(EDGE, ([0.0, 0.0, 1.0, 1.0], [(1.0, 0.0), (2.0, 1.0), (-1.0, 3.0), (0.5, -2.0)], [0.0, 0.4, 1.0]),
              visible=True),  # repeated nodes are fine here
+        # The chapter's Hermite cubic in Newton form (§10.7.2): nodes 0, 0, 1, 1 and its confluent differences.
+        Case(COURSE, ([0.0, 0.0, 1.0, 1.0], [(0.0, 0.0), (3.0, 9.0), (1.0, -9.0), (-2.0, 0.0)], [0.0, 0.5, 1.0]),
+             visible=True),
         Case(EDGE, ([3.0], [(4.0, -4.0)], [0.0, 7.0]), visible=True),  # degree 0
         Case(EDGE, (SPACE_TS, SPACE, [-2.0, 0.0, 4.0]), visible=True),
         Case(SHAPES, (nts, coeffs, np.array([2.0]))),
@@ -175,6 +180,7 @@ def chebyshev_cases(rng):
         Case(BAD, (1.0, 1.0, 3)),  # an empty interval
         Case(BAD, (2.0, 1.0, 3)),
         Case(BAD, (0.0, 1.0, 2.5)),  # a count must be an integer
+        Case(BAD, (0.0, 1.0, 3.0)),  # ... and a float is no count, even a whole one
     ]
     return cases
 
@@ -271,7 +277,8 @@ EXERCISES = [
         cases=newton_eval_cases,
         compare=close(1e-9, 1e-9),
         hint="Nest from the top: value = c_n, then value = c_k + (t - t_k) value for k = n-1 ... 0. The factor of "
-        "level k uses t_k (t_n is never used, so ts may have n or n+1 entries, and nodes may repeat).",
+        "level k uses t_k (t_n is never used, so ts may have n or n+1 entries, and nodes may repeat: nothing is "
+        "divided by a difference of nodes).",
         rules={
             EDGE: "The last node $t_n$ never enters the formula, so accept both $n+1$ and $n$ nodes; the nodes need "
                 "not be distinct here",
@@ -303,12 +310,13 @@ EXERCISES = [
         reference=interpolation.chebyshev_nodes,
         cases=chebyshev_cases,
         compare=close(1e-12, 1e-12),
-        hint="n nodes (n counts nodes): (a+b)/2 + (b-a)/2 cos((2i+1)π/(2n)) for i = 0 ... n-1, in radians, "
-        "returned in increasing order. n must be an integer >= 1 and a < b.",
+        hint="N = n nodes (n counts nodes): (a+b)/2 + (b-a)/2 cos((2i+1)π/(2N)) for i = 0 ... N-1, in radians, "
+        "returned in increasing order. n must be an integer >= 1 (an int or a NumPy integer; 3.0 is a float, "
+        "not a count) and a < b.",
         rules={
             EDGE: "Return a 1-D array of shape `(n,)` in **increasing** order",
-            BAD: "Raise a `ValueError` when $a\\ge b$ or $n<1$, and a `ValueError` or `TypeError` when `n` is not "
-                "an integer.",
+            BAD: "Raise a `ValueError` when $a\\ge b$ or `n` $<1$, and a `ValueError` or `TypeError` when `n` is not "
+                "an integer (`3.0` included).",
         },
     ),
     Exercise(
@@ -317,8 +325,8 @@ EXERCISES = [
         cases=segments_cases,
         compare=exact(),
         hint="L_c = n(n-1) max_i |c_(i+2) - 2c_(i+1) + c_i| for each coordinate c (absolute values of second "
-        "differences); m = ceil(sqrt(‖L‖ / (8 tol))) with ‖L‖ the Euclidean length of (L_x, L_y, ...), and at "
-        "least 1. Return an int.",
+        "differences); m = ceil(sqrt(L / (8 tol))) with L = sqrt(L_x² + L_y² + ...), the Euclidean length of "
+        "(L_x, L_y, ...), and at least 1. Return an int.",
         rules={
             EDGE: "curves of degree 0 and 1, and straight lines of any degree, need one chord.",
             BAD: "raise a `ValueError` for `tol <= 0` and for `points` that are not a 2-D array.",

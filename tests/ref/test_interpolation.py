@@ -38,7 +38,7 @@ ROW = notes_example("10.newton_row")
 NEVILLE = notes_example("10.neville")
 FLATTENING = notes_example("10.flattening")
 HERMITE = notes_example("10.hermite")
-EVALUATORS = [ip.lagrange_eval, ip.lagrange_eval_plain, ip.neville]
+EVALUATORS = [ip.lagrange_eval, ip.lagrange_eval_plain, ip.neville, ip.neville_plain, ip.barycentric_eval]
 
 
 def exact(value):
@@ -208,7 +208,11 @@ def test_every_form_is_the_same_polynomial_as_scipy_barycentric(seed, count):
     t = np.linspace(-2.5, 4, 37)
     expected = BarycentricInterpolator(ts, points)(t)
     coeffs = ip.divided_differences(ts, points)
-    found = [f(ts, points, t) for f in EVALUATORS] + [ip.newton_eval(ts, coeffs, t), newton_value(ts, coeffs, t)]
+    found = [f(ts, points, t) for f in EVALUATORS] + [
+        ip.newton_eval(ts, coeffs, t),
+        ip.newton_eval_plain(ts, coeffs, t),
+        newton_value(ts, coeffs, t),
+    ]
     scale = 1 + np.abs(expected).max()
     for values in found:
         np.testing.assert_allclose(values, expected, atol=1e-9 * scale)
@@ -225,6 +229,7 @@ def test_scalar_values_and_scipy_lagrange():
     coeffs = ip.divided_differences(ts, values)
     assert coeffs.shape == (4,)
     assert isinstance(ip.newton_eval(ts, coeffs, 1.3), float)
+    assert isinstance(ip.newton_eval_plain(ts, coeffs, 1.3), float)
     np.testing.assert_allclose(ip.newton_eval(ts, coeffs, 1.3), polynomial(1.3), rtol=1e-12)
     np.testing.assert_allclose(ip.power_interpolation(ts, values), polynomial.coeffs[::-1], rtol=1e-10)
 
@@ -530,6 +535,104 @@ def test_birkhoff_conditions_can_be_singular():
     assert sp.expand(matrix.det() - expected) == 0 or sp.expand(matrix.det() + expected) == 0
 
 
+# --- the plain forms the chapter shows, barycentric interpolation, Hermite data in Newton form, Lebesgue ----------
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_the_plain_forms_the_chapter_shows_agree_with_the_tuned_ones(seed):
+    ts, points = random_data(seed, 2 + 3 * seed, dim=1 + seed % 3)
+    t = np.concatenate([ts, np.linspace(ts.min() - 1, ts.max() + 1, 31)])
+    scale = 1e-10 * (1 + np.abs(points).max())
+    np.testing.assert_allclose(ip.neville_plain(ts, points, t), ip.neville(ts, points, t), atol=scale)
+    coeffs = ip.divided_differences(ts, points)
+    np.testing.assert_allclose(ip.newton_eval_plain(ts, coeffs, t), ip.newton_eval(ts, coeffs, t), atol=scale)
+    np.testing.assert_allclose(ip.newton_eval_plain(ts[:-1], coeffs, t), ip.newton_eval(ts, coeffs, t), atol=scale)
+    for f in (ip.neville_plain, ip.lagrange_eval_plain, ip.barycentric_eval):
+        assert f(ts, points, 0.25).shape == (points.shape[1],)
+        assert f(ts, points[:, 0], [0.25]).shape == (1,)
+
+
+def test_barycentric_weights_are_the_inverse_node_products_up_to_one_factor():
+    ts = np.array([0.0, 1.0, 3.0, 4.0])
+    products = np.array([np.prod([ti - tj for tj in ts if tj != ti]) for ti in ts])
+    weights = ip.barycentric_weights(ts)
+    ratio = weights * products
+    np.testing.assert_allclose(ratio, ratio[0], rtol=1e-14)
+    assert np.abs(weights).max() == 1.0
+    # Chebyshev nodes (zeros): weights proportional to (-1)^i sin((2i+1)π/(2n+2)) (Berrut–Trefethen 2004, (5.3)).
+    n = 12
+    nodes = ip.chebyshev_nodes(-1.0, 1.0, n + 1)[::-1]  # the formula's decreasing order
+    i = np.arange(n + 1)
+    expected = (-1.0) ** i * np.sin((2 * i + 1) * np.pi / (2 * n + 2))
+    np.testing.assert_allclose(ip.barycentric_weights(nodes), expected / np.abs(expected).max(), atol=1e-13)
+
+
+def test_barycentric_formula_gives_the_data_at_the_nodes_and_takes_any_weights_scale():
+    ts, points = random_data(3, 7)
+    np.testing.assert_array_equal(ip.barycentric_eval(ts, points, ts), points)
+    t = np.linspace(ts.min(), ts.max(), 41)
+    weights = ip.barycentric_weights(ts)
+    np.testing.assert_allclose(ip.barycentric_eval(ts, points, t, weights=1e-30 * weights),
+                               ip.barycentric_eval(ts, points, t), rtol=1e-12, atol=1e-12)
+    with pytest.raises(ValueError, match="weights: expected 7 non-zero weights"):
+        ip.barycentric_eval(ts, points, t, weights=np.zeros(7))
+
+
+def test_newton_in_increasing_order_loses_its_accuracy_where_barycentric_keeps_it():
+    # §10.5: cos 3t at 81 Chebyshev nodes of [0, 1]. Increasing order: the coefficients computed
+    # from the crowded first nodes carry huge rounding errors; a scrambled order, Lagrange and the
+    # barycentric formula stay at rounding level.
+    x = ip.chebyshev_nodes(0.0, 1.0, 81)
+    t = np.linspace(0, 1, 501)
+    f = np.cos(3 * x)
+    error = lambda values: np.abs(values - np.cos(3 * t)).max()  # noqa: E731
+    assert error(ip.newton_eval(x, ip.divided_differences(x, f), t)) > 1e-3
+    order = np.random.default_rng(2017).permutation(81)
+    assert error(ip.newton_eval(x[order], ip.divided_differences(x[order], f[order]), t)) < 1e-12
+    assert error(ip.barycentric_eval(x, f, t)) < 1e-13
+    assert error(ip.lagrange_eval(x, f, t)) < 1e-13
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_confluent_divided_differences_give_the_hermite_interpolant_of_scipy_krogh(seed):
+    rng = np.random.default_rng(seed)
+    nodes = np.repeat(np.sort(rng.uniform(-2, 2, 3)) + np.arange(3), rng.integers(1, 4, 3))
+    values = rng.uniform(-3, 3, (len(nodes), 2))
+    coeffs = ip.confluent_divided_differences(nodes, values)
+    t = np.linspace(-3, 5, 23)
+    expected = KroghInterpolator(nodes, values)(t)
+    np.testing.assert_allclose(ip.newton_eval(nodes, coeffs, t), expected, atol=1e-8 * (1 + np.abs(expected).max()))
+
+
+def test_confluent_divided_differences_of_the_hermite_example_and_of_distinct_nodes():
+    p0, p1, d0, d1 = HERMITE.args("p0", "p1", "d0", "d1")
+    coeffs = ip.confluent_divided_differences([0.0, 0.0, 1.0, 1.0], [p0, d0, p1, d1])
+    np.testing.assert_array_equal(coeffs, [[0, 0], [3, 9], [1, -9], [-2, 0]])  # the chapter's hand table
+    t = np.linspace(0, 1, 11)
+    np.testing.assert_allclose(ip.newton_eval([0.0, 0.0, 1.0, 1.0], coeffs, t), ip.hermite_eval(p0, p1, d0, d1, t))
+    ts, points = random_data(4, 6)
+    np.testing.assert_allclose(ip.confluent_divided_differences(ts, points), ip.divided_differences(ts, points))
+    # e^t at 0 three times: 1, 1, 1/2 (the Taylor coefficients)
+    np.testing.assert_allclose(ip.confluent_divided_differences([0.0, 0.0, 0.0], [1.0, 1.0, 1.0]), [1.0, 1.0, 0.5])
+    with pytest.raises(ValueError, match="ts: equal nodes must stand next to each other"):
+        ip.confluent_divided_differences([0.0, 1.0, 0.0], [1.0, 2.0, 3.0])
+
+
+def test_lebesgue_function_is_one_at_the_nodes_and_bounds_the_effect_of_data_errors():
+    ts = np.linspace(-1, 1, 9)
+    np.testing.assert_allclose(ip.lebesgue_function(ts, ts), 1.0, atol=1e-13)
+    x = np.linspace(-1, 1, 2001)
+    lam = ip.lebesgue_function(ts, x)
+    np.testing.assert_allclose(lam, np.abs(ip.lagrange_basis(ts, x)).sum(axis=1))
+    signs = np.sign(ip.lagrange_basis(ts, x[np.argmax(lam)]))  # the worst data errors of size one
+    assert np.isclose(ip.lagrange_eval(ts, signs, x[np.argmax(lam)]), lam.max())
+    # Chebyshev nodes: below (2/π) log(n+1) + 1 (Rivlin); uniform ones: exponential growth.
+    for count in (5, 11, 21, 31):
+        chebyshev = ip.lebesgue_function(ip.chebyshev_nodes(-1.0, 1.0, count), x).max()
+        assert chebyshev <= 2 / np.pi * np.log(count) + 1
+    assert ip.lebesgue_function(np.linspace(-1, 1, 21), x).max() > 1e4
+
+
 # --- bad input -------------------------------------------------------------------------------------------
 
 
@@ -552,6 +655,11 @@ def test_birkhoff_conditions_can_be_singular():
     (lambda: ip.undetermined_coefficients([0.0, 1.0], [0, 0.5], [1.0, 2.0]), "orders: expected 2 non-negative"),
     (lambda: ip.undetermined_coefficients([0.0, 1.0], [0, -1], [1.0, 2.0]), "orders: expected 2 non-negative"),
     (lambda: ip.node_polynomial_max([0.0, 1.0], 1.0, 0.0), "a, b: expected a < b"),
+    (lambda: ip.neville_plain([0.0, 1.0, 0.0], [[0.0], [1.0], [2.0]], 0.5), "ts: the nodes must be distinct"),
+    (lambda: ip.barycentric_eval([0.0, 0.0], [1.0, 2.0], 0.5), "ts: the nodes must be distinct"),
+    (lambda: ip.newton_eval_plain([0.0], [1.0, 2.0, 3.0], 0.5), "ts: 3 coefficients need 3 or 2 nodes"),
+    (lambda: ip.confluent_divided_differences([0.0, 1.0], [1.0]), "values: expected one entry per node"),
+    (lambda: ip.checked_data([0.0, 1.0], [1.0], "values"), "values: expected one entry per node"),
 ])
 def test_bad_input_is_named(call, match):
     with pytest.raises(ValueError, match=match):
@@ -560,4 +668,5 @@ def test_bad_input_is_named(call, match):
 
 def test_chebyshev_nodes_count_must_be_an_integer():
     with pytest.raises(TypeError, match="n: expected an integer"):
-        ip.chebyshev_nodes(0.0, 1.0, 9.0)
+        ip.chebyshev_nodes(0.0, 1.0, 9.0)  # a whole float is no count either (exercise 10.5 says so)
+    assert len(ip.chebyshev_nodes(0.0, 1.0, np.int64(9))) == 9

@@ -34,17 +34,20 @@ def test_the_playground_starts_with_the_notes_cubic():
     assert np.allclose(de_casteljau(state["bezier"], state["grid"]), state["curve"])
 
 
-@pytest.mark.parametrize("mode", ["uniform", "chord length", "Chebyshev"])
+@pytest.mark.parametrize("mode", ["uniform", "chord length", "centripetal", "Chebyshev"])
 def test_the_playground_parameter_choices(mode):
     explorer = widgets.interpolation_explorer(draggable=False)
     state = explorer.update(parameters=mode)
     points = state["points"]
+    steps = np.linalg.norm(np.diff(points, axis=0), axis=1)
     expected = {
         "uniform": np.linspace(0, 1, 4),
-        "chord length": np.concatenate([[0], np.cumsum(np.linalg.norm(np.diff(points, axis=0), axis=1))]),
+        "chord length": np.concatenate([[0], np.cumsum(steps)]),
+        "centripetal": np.concatenate([[0], np.cumsum(np.sqrt(steps))]),  # square roots of the chords
         "Chebyshev": ip.chebyshev_nodes(0.0, 1.0, 4),
     }[mode]
-    np.testing.assert_allclose(state["ts"], expected / expected[-1] if mode == "chord length" else expected)
+    cumulative = mode in ("chord length", "centripetal")
+    np.testing.assert_allclose(state["ts"], expected / expected[-1] if cumulative else expected)
     np.testing.assert_allclose(ip.lagrange_eval(state["ts"], points, state["ts"]), points, atol=1e-12)
 
 
