@@ -23,8 +23,13 @@ implicit equations returned here use the layout of chapter 17
 (`cagd_ref.algebra.implicitize`): c[i, j] is the coefficient of x^i y^j,
 shape (n+1, n+1), scaled so that its largest coefficient is 1.
 
+The functions named `*_plain` are the teaching forms the chapter shows: the
+formulas as they stand, with no input checks; tests prove that they agree with
+the checked, tuned functions the rest of the course calls.
+
 Ref: T. W. Sederberg, T. Saito, D. Qi and K. S. Klimaszewski, Curve implicitization using moving lines,
-CAGD 11(6), 1994, 687-706.
+CAGD 11(6), 1994, 687-706; D. A. Cox, T. W. Sederberg and F. Chen, The moving line ideal basis of planar
+rational curves, CAGD 15(8), 1998, 803-827 (the mu-basis).
 """
 
 from __future__ import annotations
@@ -42,6 +47,7 @@ __all__ = [
     "moving_line_eval",
     "incidence",
     "product_moving_line",
+    "product_moving_line_plain",
     "pencil_parameter_line",
     "conic_from_pencils",
     "pencils_implicit",
@@ -49,18 +55,23 @@ __all__ = [
     "nomogram_parameter",
     "axial_moving_line",
     "bezout_moving_lines",
+    "bezout_moving_lines_plain",
     "unscaled_to_bernstein",
     "eliminate_leading",
     "cubic_pencil",
     "cubic_double_point",
+    "cubic_double_point_plain",
     "double_point_parameters",
     "moving_lines_of_degree",
     "two_moving_lines",
+    "mu_basis_coefficients",
+    "axial_condition",
     "axial_combinations",
     "quartic_double_points",
     "moving_lines_implicit",
     "moving_line_implicit",
     "tangent_moving_line",
+    "tangent_moving_line_plain",
     "envelope",
     "scaled_hodograph",
 ]
@@ -162,6 +173,29 @@ def product_moving_line(p, q) -> np.ndarray:
     (L_1 = (2 P_0 × Q_1 + P_1 × Q_0)/3, L_2 = (P_0 × Q_2 + 2 P_1 × Q_1)/3.)
     """
     return _product(_triples(p, "p"), _triples(q, "q"))
+
+
+def product_moving_line_plain(p, q) -> np.ndarray:
+    """The product formula (18.44) as it stands: the teaching form of `product_moving_line`. Notes §18.3.2.
+
+    p: control triples (m+1, 3), q: (n+1, 3), finite numbers (only that is
+    checked; `product_moving_line` checks the shapes too). Each product
+    B_i^m(t) B_j^n(t) is C(m,i) C(n,j)/C(m+n,i+j) B_(i+j)^(m+n)(t), so the
+    cross product P_i × Q_j, weighted by C(m,i) C(n,j), lands in control line
+    i+j, which is divided by C(m+n, i+j) at the end.
+
+    >>> product_moving_line_plain([(0, 0, 1), (1, 0, 1)], [(0, 1, 1), (1, 1, 1), (2, 0, 1)]).round(6).tolist()
+    [[-1.0, 0.0, 0.0], [-1.0, 0.333333, 0.333333], [-0.666667, 0.666667, 0.666667], [0.0, 1.0, 0.0]]
+    """
+    p, q = as_float_array(p, "p"), as_float_array(q, "q")
+    m, n = len(p) - 1, len(q) - 1
+    lines = np.zeros((m + n + 1, 3))
+    for i in range(m + 1):
+        for j in range(n + 1):
+            lines[i + j] += comb(m, i) * comb(n, j) * np.cross(p[i], q[j])
+    for k in range(m + n + 1):
+        lines[k] /= comb(m + n, k)
+    return lines
 
 
 # --- pencils and conics (§18.2) -----------------------------------------------------------------------------
@@ -359,6 +393,29 @@ def bezout_moving_lines(points, weights=None) -> np.ndarray:
     return _bezout(_homogeneous(points, weights))
 
 
+def bezout_moving_lines_plain(points, weights=None) -> np.ndarray:
+    """The matrix (18.58) as it stands: the teaching form of `bezout_moving_lines`. Notes §18.4.2.
+
+    points: (n+1, 2), weights None or (n+1,) (checked by `to_homogeneous`). Entry (i, j)
+    sums C(n,k) C(n,l) P_k × P_l over k <= min(i, j) with l = i+j+1-k <= n,
+    the smaller index first in each cross product.
+
+    >>> bezout_moving_lines_plain([(0, 0), (1, 2), (3, 0)], [1, 2, 1]).tolist()
+    [[[-8.0, 4.0, 0.0], [0.0, 3.0, 0.0]], [[0.0, 3.0, 0.0], [8.0, 8.0, -24.0]]]
+    """
+    weights = np.ones(len(points)) if weights is None else weights
+    h = to_homogeneous(points, weights)  # rows w_i (x_i, y_i, 1)
+    n = len(h) - 1
+    lines = np.zeros((n, n, 3))
+    for i in range(n):
+        for j in range(n):
+            for k in range(min(i, j) + 1):
+                other = i + j + 1 - k
+                if other <= n:
+                    lines[i, j] += comb(n, k) * comb(n, other) * np.cross(h[k], h[other])
+    return lines
+
+
 def unscaled_to_bernstein(rows) -> np.ndarray:
     """Rows in the unscaled basis (1-t)^(d-j) t^j -> Bernstein control lines: entry j divided by C(d, j). Notes §18.4.
 
@@ -465,6 +522,28 @@ def cubic_double_point(points, weights=None) -> np.ndarray:
     if _is_zero(axis, *pencil):
         raise ValueError("points: the pencil is a fixed line, so the curve is a line, not a cubic")
     return _point_sign(axis)
+
+
+def cubic_double_point_plain(points, weights=None) -> np.ndarray:
+    """The double point of a rational cubic, step by step: the teaching form of `cubic_double_point`. Notes §18.4.2.
+
+    points: (4, 2), weights None or (4,); beyond finite numbers nothing is
+    checked (`cubic_double_point` rejects curves that are not true cubics),
+    and the point is not scaled (any nonzero multiple is the same point). The three rows of the
+    3×3 matrix (18.58) are quadratic moving lines whose leading lines all pass
+    through P0; a null vector c of those three leading lines combines the rows
+    into a moving line with a zero leading line, that is with a factor t.
+    What is left after dropping it is a pencil, and its axis is the double point.
+
+    >>> p = cubic_double_point_plain([(0, 0), (0, 1), (1, 2), (3, 0)])
+    >>> ((p / p[2]).round(9) + 0).tolist()
+    [3.0, 0.0, 1.0]
+    """
+    rows = bezout_moving_lines_plain(points, weights)  # three quadratic moving lines
+    u, _, _ = np.linalg.svd(rows[:, 0, :])  # the leading lines, one per row
+    c = u[:, -1]  # c[0] row0 + c[1] row1 + c[2] row2 has a zero leading line
+    pencil = np.tensordot(c, rows, axes=1)[1:]  # drop it: the factor t is gone
+    return np.cross(pencil[0], pencil[1])  # the axis of the pencil
 
 
 def double_point_parameters(points, weights=None) -> np.ndarray:
@@ -621,6 +700,63 @@ def two_moving_lines(points, weights=None) -> tuple[np.ndarray, np.ndarray]:
     """
     h = _homogeneous(points, weights, min_count=3)
     return _two_lines(h)
+
+
+def mu_basis_coefficients(lines, low, high) -> tuple[np.ndarray, np.ndarray]:
+    """Scalar polynomials f, g with L = f·low + g·high for a moving line L that follows the curve (not in the notes).
+
+    lines: Bernstein control lines (m+1, 3) of a moving line L that follows a
+    curve; low, high: Bernstein control lines of a mu-basis of that curve, of
+    degrees mu <= n - mu (for example `two_moving_lines` turned into Bernstein
+    form by `unscaled_to_bernstein`). Returns the Bernstein coefficients of f
+    (degree m - mu) and of g (degree m - n + mu; an empty array when m < n - mu),
+    found by least squares. A ValueError when L is not such a combination (to
+    within 1e-9 of its size): by the theorem of Cox, Sederberg and Chen every
+    moving line that follows the curve is one, with unique f and g.
+
+    >>> pencil = [(0.0, 3.0, 0.0), (3.0, 3.0, -9.0)]                      # (18.64), the notes' cubic
+    >>> rows = unscaled_to_bernstein(bezout_moving_lines([(0, 0), (0, 1), (1, 2), (3, 0)]))   # (18.62)
+    >>> f, g = mu_basis_coefficients(rows[2], pencil, rows[0])              # row 2 = (1 + t) × the pencil
+    >>> (f.round(12) + 0).tolist(), (g.round(12) + 0).tolist()
+    ([1.0, 2.0], [0.0])
+
+    Ref: D. A. Cox, T. W. Sederberg and F. Chen, The moving line ideal basis of planar rational curves,
+    CAGD 15(8), 1998, 803-827.
+    """
+    lines, low, high = _triples(lines, "lines"), _triples(low, "low"), _triples(high, "high")
+    m = len(lines) - 1
+    columns = []
+    sizes = []
+    for basis in (low, high):
+        k = m - (len(basis) - 1)
+        sizes.append(max(k + 1, 0))
+        for j in range(k + 1):
+            columns.append(_scalar_times(basis, np.eye(k + 1)[j]).ravel())
+    if not columns:
+        raise ValueError("lines: its degree is below both degrees of the basis, so it is no combination of them")
+    matrix = np.array(columns).T
+    solution, *_ = np.linalg.lstsq(matrix, lines.ravel(), rcond=None)
+    if np.abs(matrix @ solution - lines.ravel()).max() > 1e-9 * max(np.abs(lines).max(), 1e-300):
+        raise ValueError("lines: it is not f·low + g·high; does it follow the curve of the basis?")
+    return solution[: sizes[0]] + 0.0, solution[sizes[0] :] + 0.0
+
+
+def axial_condition(la, lb) -> np.ndarray:
+    """Power coefficients (4,) in s of det[L_0(s), L_1(s), L_2(s)] for L(s) = (1-s) la + s lb. Notes §18.4.3 (18.72).
+
+    la, lb: quadratic moving lines (3, 3). The combination is axial (its three
+    control lines meet in one point) where this cubic vanishes; the notes
+    print it divided by 16 for their quartic (and call the parameter tau).
+
+    >>> la = [(0, 2, 0), (4, 4, -8), (4, -2, -8)]                       # (18.69), the notes' quartic
+    >>> lb = [(8, 6, 0), (28, 4, -24), (20, -14, -40)]
+    >>> (axial_condition(la, lb).round(6) + 0).tolist()                 # 512 s³ - 512 s² - 128 s
+    [0.0, -128.0, -512.0, 512.0]
+    """
+    la, lb = _triples(la, "la"), _triples(lb, "lb")
+    if la.shape != (3, 3) or lb.shape != (3, 3):
+        raise ValueError(f"la, lb: expected two quadratic moving lines of shape (3, 3), got {la.shape} and {lb.shape}")
+    return _axial_cubic(la, lb) + 0.0
 
 
 def _axial_cubic(la: np.ndarray, lb: np.ndarray) -> np.ndarray:
@@ -826,6 +962,22 @@ def tangent_moving_line(points, weights=None) -> np.ndarray:
     [[-3.0, 0.0, 0.0], [-3.0, 1.5, 0.0], [-1.5, 3.0, -1.5], [1.5, 4.5, -4.5], [6.0, 6.0, -18.0]]
     """
     return _tangent(_homogeneous(points, weights))
+
+
+def tangent_moving_line_plain(points, weights=None) -> np.ndarray:
+    """The tangent moving line n P_0^(n-1)(t) × P_1^(n-1)(t): the teaching form of `tangent_moving_line`. Notes §18.5.
+
+    points: (n+1, 2), weights None or (n+1,) (checked by `to_homogeneous`). The two curves
+    of degree n-1 that de Casteljau's last step combines, of the first n and
+    the last n homogeneous control points, multiplied by the product formula.
+
+    >>> tangent_moving_line_plain([(0, 0), (0, 1), (1, 2), (3, 0)]).tolist()
+    [[-3.0, 0.0, 0.0], [-3.0, 1.5, 0.0], [-1.5, 3.0, -1.5], [1.5, 4.5, -4.5], [6.0, 6.0, -18.0]]
+    """
+    weights = np.ones(len(points)) if weights is None else weights
+    h = to_homogeneous(points, weights)  # rows w_i (x_i, y_i, 1)
+    n = len(h) - 1
+    return n * product_moving_line_plain(h[:-1], h[1:])
 
 
 def envelope(lines) -> np.ndarray:

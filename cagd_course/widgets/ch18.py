@@ -47,6 +47,20 @@ def _through(point, normal_degrees: float, size: float = 1.0) -> np.ndarray:
     return np.array([normal[0], normal[1], -normal @ np.asarray(point, dtype=float)])
 
 
+def _clip_to_box(point, box, margin: float = 0.04) -> np.ndarray | None:
+    """None when the point (2,) lies in the box; else the point where the segment from the box's centre to it
+    leaves the box (pulled in by `margin` of the box size, so a marker there stays visible)."""
+    (x0, x1), (y0, y1) = box
+    point = np.asarray(point, dtype=float)
+    if x0 <= point[0] <= x1 and y0 <= point[1] <= y1:
+        return None
+    centre = np.array([(x0 + x1) / 2, (y0 + y1) / 2])
+    half = (1 - margin) * np.array([(x1 - x0) / 2, (y1 - y0) / 2])
+    direction = point - centre
+    scale = np.min(half / np.maximum(np.abs(direction), 1e-300))
+    return centre + scale * direction
+
+
 def _cartesian(point) -> np.ndarray | None:
     point = np.asarray(point)
     if abs(point[2]) <= 1e-12 * np.linalg.norm(point):
@@ -100,18 +114,21 @@ class PencilExplorer(Explorer):
         plot_parameter_line(ax, state["ends"], ticks=np.linspace(0, 1, 5))
         plot_line(ax, state["line"], *box, color="C3", linewidth=2.2, label=f"L({state['t']:.2f})")
         ax.plot(*state["mark"], "o", color="C3", markersize=7)
-        ax.plot(0.0, 0.0, **AXIS_STYLE, label="axis A")
-        ax.legend(fontsize=8, loc="lower left")
+        ax.plot(0.0, 0.0, **AXIS_STYLE, label="axis PA")
+        ax.legend(fontsize=8, loc="upper left")
         ax.set_title("a pencil passes through the marks of its parameter line", fontsize=10)
         bare_axes(ax)
 
     def describe(self, state: dict) -> str:
         sense = "counterclockwise (a0 b1 &gt; a1 b0)" if state["counterclockwise"] else "clockwise (a0 b1 &lt; a1 b0)"
+        d0, d1 = np.linalg.norm(state["ends"][0]), state["d1"]
+        crowd = ("spread symmetrically, neither end favoured (d0 = d1)" if np.isclose(d0, d1) else
+                 f"crowded near {'L0' if d0 > d1 else 'L1'}, the end of the parameter line farther from the axis")
         return "<br>".join([
-            f"d0 = {np.linalg.norm(state['ends'][0]):.3f}, d1 = {state['d1']:.3f}: "
+            f"d0 = {d0:.3f}, d1 = {d1:.3f}: "
             f"d0/d1 = |(a0, b0)|/|(a1, b1)| = {1 / np.linalg.norm(state['l1'][:2]):.3f}",
             f"L(t)·P(t) = {state['incidence']:.1e}: the member of parameter t meets the mark t",
-            f"the pencil turns {sense}",
+            f"the pencil turns {sense}; equal steps of t are {crowd}",
         ])
 
 
@@ -128,28 +145,42 @@ def pencil_explorer(t: float = 0.3) -> PencilExplorer:
 # ---------------------------------------------------------------- two pencils and their conic
 
 
-class TwoPencilsExplorer(Explorer):
-    """Two pencils, the meet of their members of one t, and the conic it traces. Notes §18.2.1, Figs. 18.1, 18.7."""
+# The course's two pencils of Figure 18.7: axes (0, 0) and (4, 0), and no line of one pencil through the
+# other's axis, so that P0, P2 and the two auxiliary points Qa = l00 × l11, Qb = l01 × l10 are four distinct points.
+FIGURE_18_7 = np.array([[2.0, -1.0, 0.0], [2.0, -3.0, 0.0], [2.0, 3.0, -8.0], [4.0, 2.0, -16.0]])
+TURN = {"min": -90.0, "max": 90.0, "step": 1.0, "readout_format": ".0f"}
 
-    BOX = ((-1.5, 3.5), (-2.0, 2.5))
-    AXES = (np.array([0.0, 0.0]), np.array([2.0, 0.0]))
+
+def _turn_about(line: np.ndarray, axis, degrees: float) -> np.ndarray:
+    """The line (3,) turned counterclockwise by `degrees` about the point `axis` (2,) on it; same normal length."""
+    phi = np.radians(degrees)
+    rotation = np.array([[np.cos(phi), -np.sin(phi)], [np.sin(phi), np.cos(phi)]])
+    normal = rotation @ line[:2]
+    return np.array([normal[0], normal[1], -normal @ np.asarray(axis, dtype=float)])
+
+
+class TwoPencilsExplorer(Explorer):
+    """Two pencils, the meet of their members of one t, and the conic it traces. Notes §18.2.1, Figs. 18.6, 18.7."""
+
+    BOX = ((-0.8, 4.8), (-1.3, 4.6))
+    AXES = (np.array([0.0, 0.0]), np.array([4.0, 0.0]))
 
     def __init__(self, t: float = 0.5):
         controls = {
             "t": _slider(widgets.FloatSlider, "t", value=t, **T),
-            "phi01": _slider(widgets.FloatSlider, "normal of L01 (°)", value=-45.0, **ANGLE),
-            "phi11": _slider(widgets.FloatSlider, "normal of L11 (°)", value=45.0, **ANGLE),
+            "turn01": _slider(widgets.FloatSlider, "turn L01 (°)", value=0.0, **TURN),
+            "turn11": _slider(widgets.FloatSlider, "turn L11 (°)", value=0.0, **TURN),
         }
         super().__init__(controls)
 
-    def compute(self, t: float, phi01: float, phi11: float) -> dict:
+    def compute(self, t: float, turn01: float, turn11: float) -> dict:
         a0, a1 = self.AXES
-        size = np.sqrt(2.0)  # the course example's lines (1, -1, 0) and (1, 1, -2) have normals of this length
-        lines = [_through(a0, 0.0), _through(a0, phi01, size), _through(a1, 90.0), _through(a1, phi11, size)]
+        l00, l01, l10, l11 = FIGURE_18_7
+        lines = [l00, _turn_about(l01, a0, turn01), l10, _turn_about(l11, a1, turn11)]
         try:
             control = moving_lines.conic_from_pencils(*lines)
         except ValueError as err:
-            raise ValueError(f"phi01, phi11: {err}") from None
+            raise ValueError(f"turn01, turn11: {err}") from None
         coeffs = moving_lines.pencils_implicit(*lines)
         try:
             kind = conic_type(coeffs[2, 0], coeffs[1, 1], coeffs[0, 2], coeffs[1, 0], coeffs[0, 1], coeffs[0, 0])
@@ -166,8 +197,8 @@ class TwoPencilsExplorer(Explorer):
             "kind": kind,
             "members": (pencil0, pencil1),
             "point": np.cross(pencil0, pencil1),
-            "pa": np.cross(lines[0], lines[3]),
-            "pb": np.cross(lines[1], lines[2]),
+            "qa": np.cross(lines[0], lines[3]),
+            "qb": np.cross(lines[1], lines[2]),
             "ticks": bezier.de_casteljau(control, ELEVEN),
         }
 
@@ -184,13 +215,13 @@ class TwoPencilsExplorer(Explorer):
         for member, color in zip(state["members"], ("C0", "C2")):
             plot_line(ax, member, *box, color=color, linewidth=2.0)
         plot_points(ax, state["ticks"], markersize=3, color="0.3")
-        plot_points(ax, state["control"], labels=[f"P{k} (w = {w:.2g})" for k, w in enumerate(state["weights"])],
+        plot_points(ax, state["control"], labels=[f"P{k}" for k in range(3)], offsets=[(-16, 6), (6, 6), (6, 6)],
                     color="C1", markersize=7)
-        plot_points(ax, [state["pa"], state["pb"]], labels=["Pa", "Pb"], offsets=[(6, 5), (6, -13)], color="C4",
+        plot_points(ax, [state["qa"], state["qb"]], labels=["Qa", "Qb"], offsets=[(6, 2), (6, -12)], color="C4",
                     marker="s", markersize=5)
         plot_points(ax, [state["point"]], color="C3", markersize=9)
         set_box(ax, *box)
-        ax.legend(fontsize=8, loc="upper left")
+        ax.legend(fontsize=8, loc="lower left")
         ax.set_title(f"two pencils meet at P({state['t']:.2f}) on a conic", fontsize=10)
         bare_axes(ax)
 
@@ -201,20 +232,21 @@ class TwoPencilsExplorer(Explorer):
         point = _cartesian(state["point"])
         where = "at infinity" if point is None else _fmt(point)
         return "<br>".join([
-            f"P0 = l00 × l10, P1 = (l00 × l11 + l01 × l10)/2, P2 = l01 × l11; weights {_fmt(state['weights'])}",
+            f"P0 = l00 × l10, P1 = (Qa + Qb)/2, P2 = l01 × l11; weights {_fmt(state['weights'])}",
             f"ℓ00 ℓ11 − ℓ01 ℓ10 = {equation}: {state['kind']}",
             f"P({state['t']:.2f}) = {where}",
         ])
 
 
 def two_pencils_explorer(t: float = 0.5) -> TwoPencilsExplorer:
-    """Sliders `t`, `phi01`, `phi11` (normals of the pencils' second lines): the conic of two pencils. Notes §18.2.1.
+    """Sliders `t`, `turn01`, `turn11` (turn the pencils' second lines about their axes): a conic. Notes §18.2.1.
 
-    The first lines are x = 0 about (0, 0) and y = 0 about (2, 0); the defaults
-    are the course example (a circle). `update` returns {"t", "lines" (4, 3),
-    "control" (3, 3) homogeneous, "weights", "implicit" (3, 3), "kind",
-    "members" (the two lines of parameter t), "point" their meet, "pa", "pb",
-    "ticks" (11, 3) the points of t = 0, 0.1, ..., 1}.
+    The pencils turn about (0, 0) and (4, 0); at zero turns they are the course's
+    lines of Figure 18.7, l00 = (2, -1, 0), l01 = (2, -3, 0), l10 = (2, 3, -8),
+    l11 = (4, 2, -16), which meet on an ellipse. `update` returns {"t", "lines"
+    (4, 3), "control" (3, 3) homogeneous, "weights", "implicit" (3, 3), "kind",
+    "members" (the two lines of parameter t), "point" their meet, "qa" = l00 × l11,
+    "qb" = l01 × l10, "ticks" (11, 3) the points of t = 0, 0.1, ..., 1}.
     """
     return TwoPencilsExplorer(t)
 
@@ -254,7 +286,9 @@ class DoublePointExplorer(Explorer):
         }
         super().__init__(controls)
 
-    static_control = "dx2"
+    # From the cusp preset, moving P1 sideways passes acnode (dx1 < 0), cusp (dx1 = 0) and crunode (dx1 > 0):
+    # the page without a kernel sweeps that path.
+    static_control = "dx1"
 
     def compute(self, curve: str, dx1: float, dy1: float, dx2: float, dy2: float) -> dict:
         points = CUBICS[curve] + np.array([[0.0, 0.0], [dx1, dy1], [dx2, dy2], [0.0, 0.0]])
@@ -297,15 +331,23 @@ class DoublePointExplorer(Explorer):
         point = state["double_point"]
         where = "at infinity, direction " + _fmt(point[:2]) if state["cartesian"] is None else _fmt(state["cartesian"])
         parameters = ", ".join(f"{p:.4g}" for p in state["parameters"]) or "none finite"
+        gap = ""
+        if len(state["parameters"]) == 2:
+            size = abs(state["parameters"][1] - state["parameters"][0])
+            gap = " (|t₁ − t₂| ≈ 0)" if size < 1e-6 else f" (|t₁ − t₂| = {size:.3g})"
         return "<br>".join([
             f"pencil {_fmt(state['pencil'][0])} (1 − t) + {_fmt(state['pencil'][1])} t",
             f"its axis, the double point: {where}",
-            f"reached at t = {parameters}: {state['kind']}",
+            f"reached at t = {parameters}{gap}: {state['kind']}",
         ])
 
 
 def double_point_explorer(curve: str = "notes' cubic (crunode)") -> DoublePointExplorer:
     """Dropdown `curve` and sliders `dx1`, `dy1`, `dx2`, `dy2` moving P1 and P2: a cubic's double point. Notes §18.4.2.
+
+    The "cusp" preset has its cusp at zero shifts; moving P1 sideways (`dx1`)
+    opens it into a loop (dx1 > 0, a crunode) or closes it to an isolated
+    point (dx1 < 0, an acnode), the path the static figure sweeps.
 
     `update` returns {"points" (4, 2), "double_point" (3,) homogeneous,
     "cartesian" (2,) or None at infinity, "pencil" (2, 3), "parameters" (the
@@ -329,7 +371,7 @@ class TangentExplorer(Explorer):
 
     figsize = (6.9, 3.6)
 
-    def __init__(self, curve: str = "S-curve (inflection)", t: float = 0.3):
+    def __init__(self, curve: str = "S-curve (inflection)", t: float = 0.5):
         controls = {
             "curve": widgets.Dropdown(description="curve", options=list(TANGENT_CURVES), value=curve),
             "t": _slider(widgets.FloatSlider, "t", value=t, **T),
@@ -396,7 +438,12 @@ class TangentExplorer(Explorer):
         dual.plot(*state["reciprocal"].T, color="C2", linewidth=2.2, label="reciprocal curve B = Point(P × P')")
         plot_line(dual, [*state["point"], 1.0], *dual_box, color="C0", linewidth=2.0, label="Line(A(t))")
         if state["dual_point"] is not None:
-            dual.plot(*state["dual_point"], "o", color="C3", markersize=6)
+            inside = _clip_to_box(state["dual_point"], dual_box)
+            if inside is None:
+                dual.plot(*state["dual_point"], "o", color="C3", markersize=6, label="B(t)")
+            else:  # off the panel: a hollow marker on its edge, in the direction of B(t)
+                dual.plot(*inside, "o", color="C3", markersize=8, markerfacecolor="none", markeredgewidth=2,
+                          label="B(t) is off the panel, this way")
         dual.plot(0.0, 0.0, "+", color="0.3", markersize=10)
         set_box(dual, *dual_box)
         dual.legend(fontsize=8, loc="lower left")
@@ -412,8 +459,13 @@ class TangentExplorer(Explorer):
         ])
 
 
-def tangent_explorer(curve: str = "S-curve (inflection)", t: float = 0.3) -> TangentExplorer:
+def tangent_explorer(curve: str = "S-curve (inflection)", t: float = 0.5) -> TangentExplorer:
     """Dropdown `curve` and slider `t`: the tangent moving line and the reciprocal curve. Notes §18.5.
+
+    The default t = 0.5 lies next to the S-curve's inflection (t = 0.485), so
+    B(t) starts next to the reciprocal's cusp; where B(t) leaves the panel (a
+    tangent line close to the origin), a hollow marker on the panel's edge
+    points towards it.
 
     `update` returns {"curve", "points", "t", "lines" (2n-1, 3) the tangent
     moving line, "tangent" its line at t, "point" P(t), "reciprocal" (400, 2)

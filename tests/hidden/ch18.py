@@ -168,7 +168,8 @@ def cubic_double_point_cases(rng):
     cases += [
         Case(BAD, (CONIC,)),  # not a cubic
         Case(BAD, (QUARTIC_POINTS,)),
-        Case(BAD, (COLLINEAR,)),  # a line
+        Case(BAD, (COLLINEAR,)),  # a line: the leading lines have rank 1 (a 2-D null space), the rows rank 3
+        Case(BAD, ([(0.0, 0.0), (0.0, 0.0), (0.0, 0.0), (3.0, 1.0)],)),  # P0 = P1 = P2: a line again
         Case(BAD, (RAISED_CONIC,)),  # a conic written as a cubic
         Case(BAD, (CUBIC_POINTS, [1.0, 0.0, 1.0, 1.0])),
         Case(BAD, ([(0.0, 0.0, 0.0), (1.0, 1.0, 1.0), (2.0, 0.0, 1.0), (3.0, 1.0, 0.0)],)),
@@ -261,8 +262,8 @@ EXERCISES = [
         reference=moving_lines.bezout_moving_lines,
         cases=bezout_moving_lines_cases,
         compare=close(1e-9, 1e-9),
-        hint="L_ij = Σ C(n,l) C(n,m) P_l × P_m over l <= min(i, j) and l + m = i + j + 1 (m <= n), with "
-        "homogeneous P_i = w_i (x_i, y_i, 1) and the smaller index first in the cross product.",
+        hint="L_ij = Σ C(n,k) C(n,i+j+1-k) P_k × P_(i+j+1-k) over k = 0..min(i, j), leaving out i+j+1-k > n, "
+        "with homogeneous P_k = w_k (x_k, y_k, 1) and the smaller index first in the cross product.",
         rules={
             EDGE: "For a line ($n=1$) it is the single entry $\\mathbf P_0\\times\\mathbf P_1$.",
             RATIONAL: "`weights`: `None` (a polynomial curve) or `n+1` nonzero numbers, negative ones allowed; a "
@@ -307,8 +308,8 @@ EXERCISES = [
         reference=moving_lines.tangent_moving_line,
         cases=tangent_moving_line_cases,
         compare=close(1e-9, 1e-9),
-        hint="P × P' = n A × B with A, B the degree-(n-1) curves of P_0..P_(n-1) and P_1..P_n (homogeneous): the "
-        "product formula of 18.product_moving_line, times n. It has 2n - 1 control lines, not 2n.",
+        hint="P × P' = n P_0^(n-1) × P_1^(n-1), the degree-(n-1) curves of P_0..P_(n-1) and P_1..P_n "
+        "(homogeneous): the product formula of 18.product_moving_line, times n. It has 2n - 1 control lines, not 2n.",
         rules={
             EDGE: "exactly $n$ times the product's control lines (not rescaled)",
             RATIONAL: "Use the homogeneous points $w_i(x_i,y_i,1)$: for a rational curve the Cartesian points give "

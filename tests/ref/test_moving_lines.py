@@ -407,6 +407,69 @@ def test_an_axis_on_the_curve_is_a_base_point():
     np.testing.assert_allclose(ml.moving_line_eval(lines, tau), 0, atol=1e-12)
 
 
+# --- the teaching forms and the mu-basis ---------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_the_plain_forms_agree_with_the_checked_functions(seed):
+    rng = np.random.default_rng(seed)
+    p, q = rng.normal(size=(int(1 + seed % 3), 3)), rng.normal(size=(int(1 + (seed + 1) % 4), 3))
+    np.testing.assert_allclose(ml.product_moving_line_plain(p, q), ml.product_moving_line(p, q), atol=1e-12)
+    points, weights = random_curve(seed, 1 + seed % 5)
+    np.testing.assert_allclose(ml.bezout_moving_lines_plain(points, weights), ml.bezout_moving_lines(points, weights),
+                               rtol=1e-12, atol=1e-12)
+    np.testing.assert_allclose(ml.tangent_moving_line_plain(points, weights), ml.tangent_moving_line(points, weights),
+                               rtol=1e-12, atol=1e-12)
+    np.testing.assert_allclose(ml.bezout_moving_lines_plain(points), ml.bezout_moving_lines(points), atol=1e-12)
+    cubic, cubic_weights = random_curve(seed + 100, 3)
+    assert same_up_to_scale(ml.cubic_double_point_plain(cubic, cubic_weights),
+                            ml.cubic_double_point(cubic, cubic_weights))
+
+
+@pytest.mark.parametrize("name", ["notes", "crunode", "cusp", "acnode", "at infinity"])
+def test_the_plain_double_point_finds_the_same_point(name):
+    points = {"notes": CUBIC.inputs["points"], "crunode": [(3, 3), (-13, -15), (-13, 15), (3, -3)],
+              "cusp": [(0, 0), (0, 0), (1, 0), (3, 3)], "acnode": [(3, 0), (3, 1), (4, 2), (6, 6)],
+              "at infinity": [(0, 0), (1 / 3, 0), (2 / 3, 0), (1, 1)]}[name]
+    assert same_up_to_scale(ml.cubic_double_point_plain(points), ml.cubic_double_point(points))
+
+
+@pytest.mark.parametrize("degree, seed", [(2, 0), (3, 1), (4, 2), (5, 3), (6, 4)])
+def test_two_moving_lines_form_a_mu_basis(degree, seed):
+    """Cox, Sederberg and Chen (1998): La × Lb is a constant times P(t), and every moving line that follows is
+    f La + g Lb, with as many of each degree as the count max(0, m-mu+1) + max(0, m-n+mu+1) says."""
+    points, weights = random_curve(seed, degree)
+    high, low = (ml.unscaled_to_bernstein(line) for line in ml.two_moving_lines(points, weights))
+    mu = len(low) - 1
+    assert mu == degree // 2 and len(high) - 1 == degree - mu
+    product = ml.product_moving_line(low, high)
+    assert same_up_to_scale(product, bezier.to_homogeneous(points, weights))
+    for m in range(degree + 1):
+        found = ml.moving_lines_of_degree(points, m, weights)
+        assert len(found) == max(0, m - mu + 1) + max(0, m - degree + mu + 1)
+        for line in found:
+            f, g = ml.mu_basis_coefficients(line, low, high)
+            assert len(f) == max(m - mu + 1, 0) and len(g) == max(m - degree + mu + 1, 0)
+
+
+def test_the_triple_point_quartic_has_a_mu_basis_of_degrees_one_and_three():
+    points = TRIPLE.inputs["points"]
+    high, low = (ml.unscaled_to_bernstein(line) for line in ml.two_moving_lines(points))
+    assert (len(low), len(high)) == (2, 4)
+    assert same_up_to_scale(ml.product_moving_line(low, high), bezier.to_homogeneous(points, np.ones(5)))
+    for row in ml.unscaled_to_bernstein(ml.bezout_moving_lines(points)):
+        ml.mu_basis_coefficients(row, low, high)  # every row of the 4×4 matrix is f Lb + g La
+    with pytest.raises(ValueError, match="^lines"):
+        ml.mu_basis_coefficients([(1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0)], low, high)
+
+
+def test_the_axial_condition_of_the_quartic():
+    la, lb = QUARTIC.results["la"], QUARTIC.results["lb"]
+    np.testing.assert_allclose(ml.axial_condition(la, lb), QUARTIC.results["axial_cubic"], atol=1e-9)
+    with pytest.raises(ValueError, match="^la, lb"):
+        ml.axial_condition(la, [(1.0, 0.0, 0.0), (0.0, 1.0, 0.0)])
+
+
 # --- bad input -----------------------------------------------------------------------------------------------
 
 

@@ -11,7 +11,7 @@ from matplotlib.figure import Figure  # noqa: E402
 from cagd_course import widgets  # noqa: E402
 from cagd_course.examples import notes_example  # noqa: E402
 from cagd_course.plotting import pencils as figures  # noqa: E402
-from cagd_course.widgets.ch18 import CUBICS  # noqa: E402
+from cagd_course.widgets.ch18 import CUBICS, FIGURE_18_7  # noqa: E402
 from cagd_ref import bezier, moving_lines  # noqa: E402
 
 
@@ -28,20 +28,25 @@ def test_the_member_of_parameter_t_passes_through_the_mark_t():
     assert explorer.values["phi1"] == 90.0  # rejected values are undone
 
 
-def test_the_two_pencils_explorer_starts_on_the_course_circle():
-    example = notes_example("18.two_pencils")
+def test_the_two_pencils_explorer_starts_on_the_lines_of_figure_18_7():
     explorer = widgets.two_pencils_explorer()
     state = explorer.state
-    np.testing.assert_allclose(state["lines"] / np.abs(state["lines"]).max(axis=1, keepdims=True),
-                               [line / np.abs(line).max() for line in example.args("l00", "l01", "l10", "l11")],
-                               atol=1e-12)
-    assert state["kind"] == example.results["conic_type"]
-    np.testing.assert_allclose(state["weights"] / state["weights"][0], [1.0, 1.0, 2.0])
+    np.testing.assert_allclose(state["lines"], FIGURE_18_7, atol=1e-12)
+    assert state["kind"] == "ellipse"
+    np.testing.assert_allclose(state["weights"], [8.0, 10.0, 16.0])
+    np.testing.assert_allclose(state["control"][1], (state["qa"] + state["qb"]) / 2)  # P1 halfway from Qa to Qb
+    pa, pb = (q[:2] / q[2] for q in (state["qa"], state["qb"]))
+    assert np.linalg.norm(pa - pb) > 1 and min(np.linalg.norm(state["control"][k, :2] / state["control"][k, 2] - q)
+                                               for k in (0, 2) for q in (pa, pb)) > 0.5  # four distinct points
+    c = state["implicit"]
     for t in (0.0, 0.4, 1.0):
         point = explorer.update(t=t)["point"]
         x, y = point[:2] / point[2]
-        assert x * x + y * y - 2 * x == pytest.approx(0, abs=1e-12)
-    assert explorer.update(phi11=120.0)["kind"] == "hyperbola"
+        assert sum(c[i, j] * x**i * y**j for i in range(3) for j in range(3)) == pytest.approx(0, abs=1e-12)
+    assert explorer.update(turn11=40.0)["kind"] == "hyperbola"
+    turned = explorer.state["lines"][3]
+    assert turned @ [4.0, 0.0, 1.0] == pytest.approx(0, abs=1e-12)  # still through the axis (4, 0)
+    assert np.linalg.norm(turned[:2]) == pytest.approx(np.linalg.norm(FIGURE_18_7[3, :2]))
 
 
 @pytest.mark.parametrize("curve, kind", [("notes' cubic (crunode)", "crunode"), ("loop inside [0, 1]", "crunode"),
@@ -64,6 +69,27 @@ def test_moving_a_control_point_moves_the_double_point_with_the_pencil():
     np.testing.assert_allclose(state["points"][1:3], CUBICS["notes' cubic (crunode)"][1:3] + [[0.4, 0.0], [0.0, -0.3]])
     assert np.linalg.norm(state["cartesian"] - first) > 0.1
     np.testing.assert_allclose(state["double_point"], moving_lines.cubic_double_point(state["points"]))
+
+
+def test_the_cusp_preset_is_a_slider_path_through_acnode_cusp_and_crunode():
+    explorer = widgets.double_point_explorer("cusp")
+    assert explorer.main_control() == "dx1"
+    kinds = [explorer.update(dx1=float(v))["kind"].split()[0] for v in np.round(np.linspace(-2, 2, 21), 12)]
+    assert kinds == ["acnode"] * 10 + ["cusp"] + ["crunode"] * 10
+    state = explorer.update(dx1=0.0)
+    np.testing.assert_allclose(state["cartesian"], bezier.evaluate(state["points"], 0.5), atol=1e-9)
+    assert "|t₁ − t₂| ≈ 0" in explorer.describe(state)
+
+
+def test_the_tangent_explorer_starts_with_the_dual_point_in_view():
+    explorer = widgets.tangent_explorer()
+    state = explorer.state
+    assert np.all(np.abs(state["dual_point"]) < 4)
+    labels = [line.get_label() for line in explorer.dual.get_lines()]
+    assert "B(t)" in labels
+    explorer.update(t=0.3)  # the tangent passes near the origin: B(t) = (1.55, 4.91) is off the panel
+    labels = [line.get_label() for line in explorer.dual.get_lines()]
+    assert "B(t) is off the panel, this way" in labels
 
 
 def test_the_tangent_explorer_draws_the_reciprocal_curve():

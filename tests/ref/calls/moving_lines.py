@@ -41,3 +41,11 @@ CALLS = {
     "scaled_hodograph": [Call((CUBIC,)), Call((CUBIC, WEIGHTS))],
 }
 CALLS["double_point_parameters"] = [Call((CUBIC,)), Call((CUBIC, WEIGHTS))]
+CALLS["product_moving_line_plain"] = Call((LINEAR, QUADRATIC))
+CALLS["bezout_moving_lines_plain"] = [Call((CUBIC,)), Call((QUARTIC, [1.0, 2.0, 1.0, 0.5, 1.0]))]
+CALLS["cubic_double_point_plain"] = [Call((CUBIC,)), Call((CUBIC, WEIGHTS))]
+CALLS["tangent_moving_line_plain"] = [Call((CUBIC,)), Call((CUBIC, WEIGHTS))]
+ROW2_BERNSTEIN = [[0.0, 3.0, 0.0], [1.5, 4.5, -4.5], [6.0, 6.0, -18.0]]  # row 2 of (18.62) = (1 + t) × the pencil
+ROW0_BERNSTEIN = [[-3.0, 0.0, 0.0], [-3.0, 1.5, 0.0], [0.0, 3.0, 0.0]]
+CALLS["mu_basis_coefficients"] = Call((ROW2_BERNSTEIN, PENCIL, ROW0_BERNSTEIN))
+CALLS["axial_condition"] = Call((LA, LB))
