@@ -159,7 +159,8 @@ def _listing_label(source: str, exercises: dict[str, str]) -> str:
     """
     names = [name.rsplit(".", 1)[-1] for name in re.findall(r"show_source\(\s*([\w.]+)", source)]
     label = "Reference implementation" + (f" of {', '.join(names)}" if names else "")
-    graded = [exercises[name] for name in names if name in exercises]
+    # A listing of a graded function's plain teaching form (`hull_march_plain`) guards the same exercise.
+    graded = [exercises[key] for key in (name.removesuffix("_plain") for name in names) if key in exercises]
     if graded:
         label += f": try exercise {', '.join(graded)} first"
     return label

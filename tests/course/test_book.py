@@ -327,6 +327,9 @@ def test_a_listing_of_a_graded_function_names_the_exercise_to_try_first():
     assert _listing_label("display(show_source(de_casteljau))", exercises) == (
         "Reference implementation of de_casteljau: try exercise 02.de_casteljau first"
     )
+    assert _listing_label("show_source(bezier.de_casteljau_plain)", exercises) == (
+        "Reference implementation of de_casteljau_plain: try exercise 02.de_casteljau first"
+    )
     assert _listing_label("display(show_source(continuity.curvature_comb))", exercises) == (
         "Reference implementation of curvature_comb"
     )
