@@ -68,11 +68,42 @@ def _cmd_check(args) -> int:
 
 
 def _cmd_validate(args) -> int:
+    ids = _exercise_ids(args.exercise, args.chapter)
+    if args.mutants:
+        return _validate_mutants(args, ids)
     from .grading.validate import format_verdicts, validate
 
-    verdicts = validate(seed=args.seed, ids=args.exercise or None)
+    verdicts = validate(seed=args.seed, ids=ids)
     print(format_verdicts(verdicts))
     return 0 if not any(v.problems for v in verdicts) else 1
+
+
+def _exercise_ids(exercises: list[str] | None, chapters: list[int] | None) -> list[str] | None:
+    """The exercise ids named on the command line, with every exercise of the chapters named; None for all."""
+    if not exercises and not chapters:
+        return None
+    from .manifest import load_course
+
+    course = load_course()
+    known = {c.number: c for c in course.chapters}
+    unknown = [n for n in chapters or () if n not in known]
+    if unknown:
+        raise SystemExit(f"cagd validate: no chapter {unknown} in book.toml (chapters {min(known)}-{max(known)})")
+    ids = list(exercises or ())
+    for number in chapters or ():
+        ids += [eid for eid in known[number].exercise_points if eid not in ids]
+    return ids
+
+
+def _validate_mutants(args, ids: list[str] | None) -> int:
+    from .grading.mutation import format_mutation_reports, run_mutants, survivors_toml
+
+    reports = run_mutants(ids=ids, seed=args.seed, workers=args.workers)
+    print(format_mutation_reports(reports, show=args.show))
+    if args.survivors:
+        args.survivors.write_text(survivors_toml(reports), encoding="utf-8")
+        print(f"survivors written to {args.survivors} as [[accepted]] entries with an empty reason")
+    return 0 if all(r.ok for r in reports) else 1
 
 
 def _cmd_grade(args) -> int:
@@ -257,7 +288,22 @@ def build_parser() -> argparse.ArgumentParser:
         "validate", help="prove every hidden suite: reference 100%%, stub 0%%, recorded mistakes < 100%%"
     )
     p.add_argument("--exercise", action="append", metavar="ID", help="only this exercise id (repeatable)")
+    p.add_argument(
+        "--chapter", action="append", type=int, metavar="N", help="only this chapter's exercises (repeatable)"
+    )
     p.add_argument("--seed", type=int, default=0, help="seed of the random cases (default 0)")
+    p.add_argument(
+        "--mutants",
+        action="store_true",
+        help="instead: change the reference of each exercise one small slip at a time (operator, comparison, "
+        "integer, min/max, a dropped raise, ...) and report the changes its suite does not catch; equivalent "
+        "ones are listed with a reason in tests/hidden/mutants/chNN.toml",
+    )
+    p.add_argument("--show", type=int, default=20, metavar="K", help="with --mutants: survivors listed per exercise "
+                   "(0: all; default 20)")
+    p.add_argument("--survivors", type=Path, metavar="FILE", help="with --mutants: also write the survivors to FILE "
+                   "as [[accepted]] entries to fill in")
+    p.add_argument("--workers", type=int, metavar="K", help="with --mutants: processes (default: one per core)")
     p.set_defaults(run=_cmd_validate)
 
     p = sub.add_parser(
