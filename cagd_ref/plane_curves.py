@@ -344,8 +344,10 @@ def classify_double_point(c, point, tol: float = ZERO_TOL) -> str:
     coefficients are at most tol times the largest coefficient of the moved
     polynomial, and D is zero when |D| <= tol (B² + 4|AC|). A point off the
     curve, a simple point or a point of multiplicity 3 or more raises
-    ValueError. (For curves of degree 4 and more a repeated tangent may also be
-    a tacnode; the test cannot tell, and calls it a cusp.) Notes §19.2.
+    ValueError. (A repeated tangent may also belong to a tacnode or a higher
+    cusp: on curves of degree 4 and more, and on reducible cubics such as the
+    parabola with its tangent y(y - x²). The test cannot tell, and calls it a
+    cusp; on an irreducible cubic D = 0 is always an ordinary cusp.) Notes §19.2.
 
     >>> classify_double_point([[0, 0, 3], [0, 1, -2], [0, 0, 0], [1, 0, 0]], (0, 0))      # x³ - 2xy² + xy + 3y²
     'crunode'

@@ -35,11 +35,18 @@ def plot_curve(ax, c, xlim, ylim, resolution: int = 360, **style) -> Axes:
     """Draw f(x, y) = 0 over the box xlim × ylim (a contour of the polynomial c). Notes §19.1.
 
     An isolated real point (an acnode) is no contour: mark it with `plot_tangent_cone` or by hand.
+    `label=` adds a legend entry drawn in the curve's colour, width and line style (`linestyles=`).
     """
     check_axes(ax)
     coeffs = _coefficients(c)
+    label = style.pop("label", None)
     options = {"colors": "C0", "linewidths": 2.0, **style}
     plot_implicit(ax, lambda u, v: P.polyval2d(u, v, coeffs), xlim, ylim, resolution=resolution, **options)
+    if label is not None:
+        # A contour set has no legend entry: an empty line in the same style stands in for it.
+        dashes = options.get("linestyles", "-")
+        ax.plot([], [], color=np.atleast_1d(options["colors"])[0], linewidth=np.atleast_1d(options["linewidths"])[0],
+                linestyle=dashes[0] if isinstance(dashes, list) else dashes, label=label)
     return set_box(ax, xlim, ylim)
 
 
@@ -77,13 +84,14 @@ def plot_parametrization(ax, xyw, interval=(-4.0, 4.0), samples: int = 600, **st
 
 
 def plot_discriminant(ax, discriminant, xlim, roots=(), scale: str = "linear", **style) -> Axes:
-    """The graph of D(x) (ascending coefficients) over xlim with its real roots marked. Notes §19.4.
+    """The graph of Res_y(f, f_y) (ascending in x) over xlim, its real roots marked. Notes §19.4.
 
     The roots are the x of vertical tangents and of singular points (and of
     vertical asymptotes, or of a repeated complex y). scale="linear" draws
-    D / max |D| over xlim; scale="symlog" draws D itself on a symmetric
-    logarithmic axis (linear within 10⁻⁵ max |D| of zero), where a simple root
-    is a crossing and a double root a touch, however large D is elsewhere.
+    R / max |R| over xlim, R = Res_y(f, f_y); scale="symlog" draws R itself on a
+    symmetric logarithmic axis (linear within 10⁻⁵ max |R| of zero), where a
+    simple root is a crossing and a double root a touch, however large R is
+    elsewhere.
     """
     check_axes(ax)
     d = as_float_array(discriminant, "discriminant")
@@ -96,11 +104,11 @@ def plot_discriminant(ax, discriminant, xlim, roots=(), scale: str = "linear", *
     ax.axhline(0.0, color="0.6", linewidth=0.8)
     if scale == "linear":
         ax.set_yscale("linear")
-        ax.plot(xs, values / size, **{"color": "C4", "linewidth": 2.0, "label": "D(x) / max |D|", **style})
+        ax.plot(xs, values / size, **{"color": "C4", "linewidth": 2.0, "label": "Res_y(f, f_y) / max |Res_y|", **style})
     else:
         threshold = 1e-5 * size
         ax.set_yscale("symlog", linthresh=threshold)
-        ax.plot(xs, values, **{"color": "C4", "linewidth": 2.0, "label": "D(x), symmetric log scale", **style})
+        ax.plot(xs, values, **{"color": "C4", "linewidth": 2.0, "label": "Res_y(f, f_y), symmetric log scale", **style})
         high = int(np.ceil(np.log10(size)))
         middle = (high + int(np.ceil(np.log10(threshold)))) // 2
         ax.set_ylim(-(10.0**high), 10.0**high)

@@ -47,14 +47,46 @@ def _family(k: float) -> np.ndarray:
     return np.array([[0.0, 0.0, -3.0], [0.0, 0.0, 0.0], [k, 0.0, 0.0], [1.0, 0.0, 0.0]])
 
 
+SUPERSCRIPTS = str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹")
+
+
+def _power(variable: str, k: int) -> str:
+    """x, x², x³, ...; the empty string for k = 0."""
+    return "" if k == 0 else variable if k == 1 else variable + str(k).translate(SUPERSCRIPTS)
+
+
+def _sum(terms: list[tuple[float, str]]) -> str:
+    """Coefficients with their monomials as a readable sum: 3a² − 3b², 1 + t², −5 − 6t; 0 when every one is 0."""
+    text = ""
+    for v, monomial in terms:
+        if abs(v) <= 1e-12:
+            continue
+        size = f"{abs(v):.4g}"
+        body = monomial if monomial and size == "1" else size + monomial
+        sign = "−" if v < 0 else "+"
+        text += (sign if sign == "−" else "") + body if not text else f" {sign} {body}"
+    return text or "0"
+
+
+def _polynomial(p, variable: str = "t") -> str:
+    """Ascending coefficients p[k] of t^k as 1 + 2t + 3t²."""
+    return _sum([(float(v), _power(variable, k)) for k, v in enumerate(np.ravel(p))])
+
+
+def _quotient(p, w) -> str:
+    """p(t)/w(t) as text: 3t² for w = 1, (−5 − 6t)/(1 + 2t), a sum in parentheses only where it needs them."""
+    top, bottom = _polynomial(p), _polynomial(w)
+    w = np.trim_zeros(np.ravel(np.asarray(w, dtype=float)), "b")
+    if len(w) == 1 and w[0] == 1.0:
+        return top
+    wrap = [f"({text})" if " " in text else text for text in (top, bottom)]
+    return f"{wrap[0]} / {wrap[1]}"
+
+
 def _equation(c: np.ndarray) -> str:
-    terms = []
-    for (i, j), v in sorted(np.ndenumerate(c), key=lambda item: (-(item[0][0] + item[0][1]), -item[0][0])):
-        if abs(v) > 1e-12:
-            monomial = ("x" + ("²³⁴"[i - 2] if i > 1 else "") if i else "") + ("y" + ("²³⁴"[j - 2] if j > 1 else "")
-                                                                              if j else "")
-            terms.append(f"{v:+.3g}{monomial}")
-    return " ".join(terms) + " = 0"
+    """c[i, j] of x^i y^j as x³ + 3x² − 3y² = 0, the highest degree first."""
+    order = sorted(np.ndenumerate(c), key=lambda item: (-(item[0][0] + item[0][1]), -item[0][0]))
+    return _sum([(float(v), _power("x", i) + _power("y", j)) for (i, j), v in order]) + " = 0"
 
 
 # ---------------------------------------------------------------- crunode, cusp, acnode
@@ -98,7 +130,7 @@ class DoublePointClassifier(Explorer):
         lines = {"crunode": "two real tangent lines (dashed)", "cusp": "one double tangent line, y = 0",
                  "acnode": "two complex tangent lines: an isolated real point"}[state["kind"]]
         return "<br>".join([
-            f"tangent cone g₂ = {a:+.3g}a² {b:+.3g}ab {c:+.3g}b² (the lowest part at the origin)",
+            f"tangent cone f̂₂(a, b) = {_sum([(a, 'a²'), (b, 'ab'), (c, 'b²')])} (the lowest part at the origin)",
             f"B² − 4AC = {state['discriminant']:.3g}: {state['kind']}, {lines}",
         ])
 
@@ -169,16 +201,12 @@ class PencilParametrizationExplorer(Explorer):
 
     def describe(self, state: dict) -> str:
         x, y, w = state["xyw"]
-
-        def text(p):
-            return " ".join(f"{v:+.3g}t^{k}" if k else f"{v:+.3g}" for k, v in enumerate(p) if abs(v) > 1e-12)
-
         where = "at infinity" if state["xy"] is None else f"{_fmt(state['xy'])}, f there {state['residual']:.1e}"
         return "<br>".join([
-            f"{_equation(state['c'])}; the lines turn about {_fmt(state['point'])}",
-            f"x = ({text(x)}) / ({text(w)}),  y = ({text(y)}) / ({text(w)})",
-            f"t = {state['t']:.2f}: the point {where}",
-            f"the curve passes through that point at {_through(state['xyw'], state['point'])}",
+            f"{_equation(state['c'])}; the lines turn about the singular point (x0, y0) = {_fmt(state['point'])}",
+            f"x(t) = {_quotient(x, w)},  y(t) = {_quotient(y, w)}",
+            f"t = {state['t']:.2f}: the green point {where}",
+            f"the parametrization reaches (x0, y0) itself at {_through(state['xyw'], state['point'])}",
         ])
 
 
@@ -231,11 +259,11 @@ VIEWS = ("whole curve", "zoom on the double point")
 
 
 class SilhouetteExplorer(TwoPanels, Explorer):
-    """A curve turned about a point, with vertical lines at the real roots of its discriminant D(x). Notes §19.4.
+    """A curve turned about a point, with vertical lines at the real roots of Res_y(f, f_y). Notes §19.4.
 
     The two panels share their x axis column for column: the upper one keeps its equal aspect by widening its y
-    range (`fill_equal`), never by narrowing its box. The whole view draws D on a symmetric log scale, the zoom on
-    a linear one.
+    range (`fill_equal`), never by narrowing its box. The lower panel draws Res_y(f, f_y) on a symmetric log
+    scale.
     """
 
     figsize = (6.2, 6.6)
@@ -297,18 +325,18 @@ class SilhouetteExplorer(TwoPanels, Explorer):
     def describe(self, state: dict) -> str:
         roots = ", ".join(f"{x:.4g}" for x in state["roots"]) or "none"
         return "<br>".join([
-            f"D(x) = Res_y(f, ∂f/∂y) has degree {len(state['discriminant']) - 1}; real roots x = {roots}",
+            f"Res_y(f, ∂f/∂y), a polynomial in x of degree {len(state['discriminant']) - 1}; real roots x = {roots}",
             "a simple root: a vertical tangent; a double root: a double point (or two vertical tangents over one x)",
-            "lower panel: D on a symmetric log scale (linear near 0), where a simple root is a crossing and a "
-            "double root a touch",
+            "lower panel: Res_y(f, f_y) on a symmetric log scale (linear near 0), where a simple root is a crossing "
+            "and a double root a touch",
         ])
 
 
 def silhouette_explorer(curve: str = "cubic of §19.5", angle: float = 0.0,
                         view: str = "whole curve") -> SilhouetteExplorer:
-    """Slider `angle` (the curve turned about a point, degrees), dropdowns `curve` and `view`: D(x) under the curve.
+    """Slider `angle` (the curve turned about a point, degrees), dropdowns `curve` and `view`: Res_y(f, f_y) below.
 
-    `update` returns {"curve", "angle", "view", "c" the turned curve, "discriminant" D (ascending in x),
+    `update` returns {"curve", "angle", "view", "c" the turned curve, "discriminant" Res_y(f, f_y) (ascending in x),
     "roots" its real roots, "double_point" where the turn took it (None for a curve without one), "zoom" whether
     the view is the zoom about it, "box"}. Notes §19.4.
     """

@@ -131,3 +131,27 @@ def test_figures_check_their_axes_and_break_at_poles():
         figures.plot_curve(None, [[0, 1], [1, 0]], (0, 1), (0, 1))
     with pytest.raises(ValueError, match="^c"):
         figures.plot_curve(ax, [1.0, 2.0], (0, 1), (0, 1))
+
+
+def test_the_readouts_use_the_chapter_s_letters_and_readable_formulas():
+    classifier = widgets.double_point_kind_explorer(k=3.0)
+    assert "f̂₂(a, b) = 3a² − 3b²" in classifier.readout.value and "g₂" not in classifier.readout.value
+    pencil = widgets.pencil_parametrization_explorer()
+    assert "x(t) = 2 / (1 + t²),  y(t) = 2t / (1 + t²)" in pencil.readout.value
+    assert "the parametrization reaches (x0, y0) itself at t = ∞ only" in pencil.readout.value
+    cubic = widgets.pencil_parametrization_explorer("cubic with coefficients 1…7 (§19.5)")
+    assert "x(t) = (−5 − 6t − 7t²) / (1 + 2t + 3t² + 4t³)" in cubic.readout.value
+    assert "x³ + 2x²y + 3xy² + 4y³ + 5x² + 6xy + 7y² = 0" in cubic.readout.value
+    silhouette = widgets.silhouette_explorer()
+    assert "Res_y(f, ∂f/∂y)" in silhouette.readout.value and "D(x)" not in silhouette.readout.value
+
+
+def test_a_curve_s_legend_entry_has_its_line_style():
+    ax = Figure().add_subplot()
+    figures.plot_curve(ax, [[0.0, -1.0], [0.0, 0.0], [1.0, 0.0]], (-2, 2), (-1, 3), colors="0.5", linewidths=1.0,
+                       linestyles=":", label="y = x²")
+    (entry,) = [line for line in ax.lines if line.get_label() == "y = x²"]
+    assert entry.get_linestyle() == ":" and entry.get_linewidth() == 1.0
+    solid = Figure().add_subplot()
+    figures.plot_curve(solid, [[0.0, -1.0], [0.0, 0.0], [1.0, 0.0]], (-2, 2), (-1, 3), label="y = x²")
+    assert solid.lines[0].get_linestyle() == "-"
