@@ -12,6 +12,7 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.axes import Axes
 from matplotlib.collections import PolyCollection
+from matplotlib.colors import to_rgba
 from matplotlib.patches import Polygon, Rectangle
 
 from cagd_ref._validation import as_float_array, as_vector
@@ -136,7 +137,7 @@ def plot_fat_line(ax, line, dmin: float, dmax: float, extent, color: str = BAND_
 
 
 def plot_explicit_clip(ax, values, dmin: float, dmax: float, kept=None, interval=(0.0, 1.0), curve: bool = True,
-                       hull: bool = True, label: str = "d") -> Axes:
+                       hull: bool = True, label: str = "d", parameter: str = "t") -> Axes:
     """The explicit curve (t, d(t)): control points (t_i, d_i), their hull, the band, the kept range. Notes §7.7.2.
 
     values: the d_i, (n+1,). The band dmin <= d <= dmax is shaded (an
@@ -144,6 +145,8 @@ def plot_explicit_clip(ax, values, dmin: float, dmax: float, kept=None, interval
     rational curves); kept = (t_lo, t_hi) on the local [0, 1], or None, is
     marked on the parameter interval `interval` the explicit curve is drawn over,
     its range written in the top margin of the panel (clear of the lines).
+    parameter names the abscissa (the x-axis label and the legend): "u" when
+    the clipped curve is Q.
     """
     check_axes(ax)
     d = as_vector(values, "values")
@@ -164,10 +167,11 @@ def plot_explicit_clip(ax, values, dmin: float, dmax: float, kept=None, interval
     if hull and len(points) >= 3:
         ax.add_patch(Polygon(convex_hull(points), closed=True, facecolor=HULL_COLOR, alpha=0.15,
                              edgecolor=HULL_COLOR, linewidth=1.0, label="convex hull"))
-    ax.plot(*points.T, **{**POLYGON_STYLE, "label": f"control points (t_i, {label}_i)"})
+    ax.plot(*points.T, **{**POLYGON_STYLE, "label": f"control points ({parameter}_i, {label}_i)"})
     if curve and len(d) > 1:
         s = np.linspace(0.0, 1.0, 200)
-        ax.plot(t0 + (t1 - t0) * s, bernstein_horner(d, s), color="C0", linewidth=2.0, label=f"{label}(t)")
+        ax.plot(t0 + (t1 - t0) * s, bernstein_horner(d, s), color="C0", linewidth=2.0,
+                label=f"{label}({parameter})")
     if kept is not None:
         lo, hi = (t0 + (t1 - t0) * float(v) for v in kept)
         ax.axvspan(lo, hi, color=KEPT_COLOR, alpha=0.10)
@@ -179,7 +183,7 @@ def plot_explicit_clip(ax, values, dmin: float, dmax: float, kept=None, interval
     ax.set_xlim(t0 - 0.03 * (t1 - t0), t1 + 0.03 * (t1 - t0))
     # Room at the top for the kept range's label.
     ax.set_ylim(min(low, bottom) - room, max(high, top) + (3.5 if kept is not None else 2) * room)
-    ax.set_xlabel("t")
+    ax.set_xlabel(parameter)
     ax.set_ylabel(label)
     return ax
 
@@ -193,7 +197,7 @@ def _band_label(dmin: float, dmax: float, name: str = "d") -> str:
 
 
 def _number(value: float) -> str:
-    return f"{value:.4g}"
+    return f"{value:.4g}".replace("-", "−")  # a minus sign, not a hyphen
 
 
 def plot_v_rule(ax, values, end: str = "left", color: str = "C3", label_meets: str = "all",
@@ -273,13 +277,21 @@ def plot_parameter_pairs(ax, steps, depth: int, found=None, color: str = "C0") -
     return ax
 
 
-def plot_boxes(ax, point_sets, color: str = "C0", alpha: float = 0.12, label: str | None = None) -> Axes:
-    """The x-y bounding box of each set of control points (one (n+1, 2) array each): the boxes of §7.5-7.6."""
+def plot_boxes(ax, point_sets, color: str = "C0", alpha: float = 0.12, label: str | None = None,
+               edge_alpha: float | None = None, zorder: float | None = None) -> Axes:
+    """The x-y bounding box of each set of control points (one (n+1, 2) array each): the boxes of §7.5-7.6.
+
+    alpha is the opacity of the fill, and of the outline unless edge_alpha is
+    given (a strong outline keeps small boxes visible); zorder above 2 draws
+    the boxes over the curves.
+    """
     check_axes(ax)
+    face = to_rgba(color, alpha)
+    edge = to_rgba(color, alpha if edge_alpha is None else edge_alpha)
     for k, points in enumerate(point_sets):
         p = as_float_array(points, "point_sets")
         (x0, y0), (x1, y1) = p.min(axis=0), p.max(axis=0)
-        ax.add_patch(Rectangle((x0, y0), x1 - x0, y1 - y0, facecolor=color, alpha=alpha, edgecolor=color,
-                               linewidth=0.8, label=label if k == 0 else None))
+        ax.add_patch(Rectangle((x0, y0), x1 - x0, y1 - y0, facecolor=face, edgecolor=edge, linewidth=0.8,
+                               label=label if k == 0 else None, **({} if zorder is None else {"zorder": zorder})))
     ax.autoscale_view()
     return finish_planar(ax)

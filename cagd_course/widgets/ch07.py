@@ -396,11 +396,14 @@ class ClippingExplorer(_Panels, Explorer):
         ax.set_title(f"clip {state['step'] + 1} of {state['steps']}: {state['clipped']} against the fat line of "
                      f"{state['other']}", fontsize=9)
         local = event.local
+        parameter = "t" if state["clipped"] == "P" else "u"  # the clipped curve's own parameter
         if np.ndim(event.values) == 1:
-            plot_explicit_clip(right, event.values, dmin, dmax, kept=local, label="d")
+            plot_explicit_clip(right, event.values, dmin, dmax, kept=local, label="d", parameter=parameter)
         else:
-            plot_explicit_clip(right, event.values[0], 0.0, np.inf, kept=local, label="w(d − dmin)")
+            plot_explicit_clip(right, event.values[0], 0.0, np.inf, kept=local, label="w(d − dmin)",
+                               parameter=parameter)
             right.plot(np.linspace(0, 1, event.values.shape[1]), event.values[1], "s--", color="C5", markersize=4)
+        right.set_xlabel(f"{parameter}, local to the piece")
         right.set_title(f"distances of {state['clipped']}'s piece from the fat line" +
                         ("" if event.perpendicular is None else " (parallel one)"), fontsize=9)
         right.locator_params(nbins=4)
