@@ -391,10 +391,15 @@ def _singular_message(u: np.ndarray, kn: np.ndarray, n: int, name: str = "params
         return (f"{name}: the normal equations are numerically singular: the Schoenberg-Whitney condition holds, "
                 "but only barely (parameters very close to each other or to the ends of supports)")
     j = int(np.argmax(np.isnan(chosen)))
+    c = len(kn) - n + 1
     a, b = kn[max(j - 1, 0)], kn[min(j + n, len(kn) - 1)]
+    # N_j is nonzero inside its support (t_(j-1), t_(j+n)); only N_0 and N_(c-1) of clamped ends reach the end itself.
+    left = "[" if j == 0 and kn[0] == kn[n - 1] else "("
+    right = "]" if j == c - 1 and kn[-1] == kn[c - 1] else ")"
     after = "" if j == 0 else f" beyond the parameter {chosen[j - 1]:g} taken by N_{j - 1}"
-    return (f"{name}: the normal equations are singular: the basis function N_{j}, nonzero on [{a:g}, {b:g}], finds "
-            f"no parameter of its own{after} (the Schoenberg-Whitney condition fails: no increasing choice of "
+    support = f"{left}{a:g}, {b:g}{right}"
+    return (f"{name}: the normal equations are singular: the basis function N_{j}, nonzero on {support}, "
+            f"finds no parameter of its own{after} (the Schoenberg-Whitney condition fails: no increasing choice of "
             "parameters with N_j(τ_(k_j)) != 0 for every j)")
 
 
@@ -789,19 +794,34 @@ def fit_within_tolerance(points, params, knots, degree: int, tol: float) -> tupl
 # --- 11.4.2: fairing within boxes ---------------------------------------------------------------------
 
 
-def estimate_frames(points) -> tuple[np.ndarray, np.ndarray]:
+def estimate_frames(points, control_points=None, knots=None, params=None) -> tuple[np.ndarray, np.ndarray]:
     """Unit tangents and normals (M, 2) of planar samples: e_k along Q_(k+1) - Q_(k-1), e_k⊥ turned left. Notes §11.4.2.
 
-    As in the notes, Q_(-1) = Q_0 and Q_M = Q_(M-1) at the ends.
+    As in the notes, Q_(-1) = Q_0 and Q_M = Q_(M-1) at the ends. This "very
+    simple" estimate (the notes' words) is poor where neighbouring samples lie
+    closer together than their noise. Given a first fit instead (control_points
+    (c, 2) with knots (c + n - 1,), and the samples' params (M,)), the tangent
+    e_k is the unit tangent P'(τ_k) of that curve.
     """
     pts = _samples(points)
     if pts.shape[1] != 2:
         raise ValueError(f"points: tangent and normal boxes are planar, expected shape (M, 2), got {pts.shape}")
-    padded = np.vstack([pts[:1], pts, pts[-1:]])
-    chords = padded[2:] - padded[:-2]
+    if control_points is None:
+        padded = np.vstack([pts[:1], pts, pts[-1:]])
+        chords = padded[2:] - padded[:-2]
+        where = "its two neighbours coincide"
+    else:
+        control, knot_vector, n = checked_bspline(as_points(control_points, "control_points"), knots)
+        if control.shape[1] != 2:
+            raise ValueError(f"control_points: expected a planar curve (c, 2), got {control.shape}")
+        taus = checked_params(params, knot_vector, n)
+        if len(taus) != len(pts):
+            raise ValueError(f"params: expected one parameter per sample ({len(pts)}), got {len(taus)}")
+        chords = derivative(control, knot_vector, taus, 1)
+        where = "the curve's tangent vanishes there"
     lengths = np.linalg.norm(chords, axis=1)
     if np.any(lengths == 0):
-        raise ValueError(f"points: no tangent at sample {int(np.argmax(lengths == 0))}: its two neighbours coincide")
+        raise ValueError(f"points: no tangent at sample {int(np.argmax(lengths == 0))}: {where}")
     tangents = chords / lengths[:, None]
     return tangents, np.column_stack([-tangents[:, 1], tangents[:, 0]])
 
@@ -823,8 +843,10 @@ def box_faired_fit(points, params, knots, degree: int, half_width, frame: str = 
     Minimises ∫‖P''‖² subject to |(P(τ_k) - Q_k)·e| <= h for the box axes e:
     frame "axes" uses the coordinate axes (11.10), any dimension d, and
     half_width h is a number, (M,) or (M, d); frame "curve" (planar) uses the
-    unit tangent and normal of `estimate_frames` (11.11), with half_width a
-    number, (M,) or (M, 2) = (along the tangent, along the normal). The
+    unit tangent and normal of `estimate_frames` (11.11), the notes' estimate
+    from neighbouring samples, and frame "fit" those of the least-squares fit
+    with the same parameters and knots (`estimate_frames` given that fit); then
+    half_width is a number, (M,) or (M, 2) = (along the tangent, along the normal). The
     quadratic programme (one per coordinate for "axes", one in all 2c unknowns
     for "curve") is solved by `box_programme`; a 10⁻⁶-weighted least-squares
     term makes the answer unique (a line through all boxes would otherwise tie
@@ -841,8 +863,12 @@ def box_faired_fit(points, params, knots, degree: int, half_width, frame: str = 
         h = _half_widths(half_width, len(pts), pts.shape[1])
         # One programme per coordinate: rows, box centres, half sizes and the tie-break's linear term.
         blocks = [(collocation, pts[:, k], h[:, k], tie * collocation.T @ pts[:, k]) for k in range(pts.shape[1])]
-    elif frame == "curve":
-        tangents, normals = estimate_frames(pts)
+    elif frame in ("curve", "fit"):
+        if frame == "curve":
+            tangents, normals = estimate_frames(pts)
+        else:
+            first_fit = _solve_fit(*_fit_system(pts, u, kn, n, c), kn, n, u)
+            tangents, normals = estimate_frames(pts, first_fit, kn, u)
         h = _half_widths(half_width, len(pts), 2)
         # Rows k and M + k measure the deviation along t_k and n_k; the unknowns are all x's, then all y's.
         rows = np.vstack([np.hstack([collocation * e[:, :1], collocation * e[:, 1:]]) for e in (tangents, normals)])
@@ -850,7 +876,7 @@ def box_faired_fit(points, params, knots, degree: int, half_width, frame: str = 
         blocks = [(rows, centres, h.T.ravel(), tie * (collocation.T @ pts).T.ravel())]
         fair, gram = np.kron(np.eye(2), fair), np.kron(np.eye(2), gram)
     else:
-        raise ValueError(f"frame: expected 'axes' or 'curve', got {frame!r}")
+        raise ValueError(f"frame: expected 'axes', 'curve' or 'fit', got {frame!r}")
     hessian = fair + tie * gram
     solutions = [_box_solution(hessian, *block) for block in blocks]
     return np.column_stack(solutions) if frame == "axes" else solutions[0].reshape(2, c).T

@@ -69,40 +69,50 @@ def plot_fit(ax, control_points, knots, polygon: bool = True, label: str | None 
 
 
 def plot_residuals(ax, points, fitted, scale: float = 1.0, **style) -> Axes:
-    """Draw the residual of every sample: a segment from Q_k to its curve point P(τ_k), stretched by `scale`."""
+    """Draw the residual of every sample: a segment from Q_k to its curve point P(τ_k), stretched by `scale`.
+
+    The segments lie on top of the curves and samples drawn so far, so that residuals along the curve stay visible.
+    """
     check_axes(ax)
     pts = planar_points(points)
     on_curve = planar_points(fitted, "fitted")
     if on_curve.shape != pts.shape:
         raise ValueError(f"fitted: expected one curve point per sample, shape {pts.shape}, got {on_curve.shape}")
     ends = pts + scale * (on_curve - pts)
-    segments = LineCollection(np.stack([pts, ends], axis=1), **{"colors": "C1", "linewidths": 1.2, **style})
+    style = {"colors": "C1", "linewidths": 1.2, "zorder": 2.5, **style}
+    segments = LineCollection(np.stack([pts, ends], axis=1), **style)
     ax.add_collection(segments)
     ax.update_datalim(np.vstack([pts, ends]))
     ax.autoscale_view()
     return finish_planar(ax)
 
 
-def box_corners(points, half_width, frame: str = "axes") -> np.ndarray:
+def box_corners(points, half_width, frame="axes") -> np.ndarray:
     """Corners (M, 4, 2) of the tolerance boxes of planar samples: along the axes or tangent and normal. Notes §11.4.2.
 
     half_width: a number, (M,) or (M, 2): the half sizes along x and y ("axes"),
-    or along the tangent and the normal of `approximation.estimate_frames` ("curve").
+    or along the tangent and the normal of `approximation.estimate_frames` ("curve"),
+    or along the unit tangents and normals (M, 2) of a given pair (tangents, normals).
     """
     pts = planar_points(points)
     h = as_float_array(half_width, "half_width")
     h = np.broadcast_to(h[:, None] if h.ndim == 1 else h, (len(pts), 2))
     if frame == "axes":
         first, second = np.array([[1.0, 0.0]]), np.array([[0.0, 1.0]])
-    elif frame == "curve":
+    elif isinstance(frame, str) and frame == "curve":
         first, second = estimate_frames(pts)
+    elif not isinstance(frame, str) and len(frame) == 2:
+        first, second = (planar_points(e, "frame") for e in frame)
+        if first.shape != pts.shape or second.shape != pts.shape:
+            raise ValueError(f"frame: expected (tangents, normals) of shape {pts.shape}, got {first.shape} "
+                             f"and {second.shape}")
     else:
-        raise ValueError(f"frame: expected 'axes' or 'curve', got {frame!r}")
+        raise ValueError(f"frame: expected 'axes', 'curve' or a pair (tangents, normals), got {frame!r}")
     u, v = h[:, :1] * first, h[:, 1:] * second
     return np.stack([pts - u - v, pts + u - v, pts + u + v, pts - u + v], axis=1)
 
 
-def plot_boxes(ax, points, half_width, frame: str = "axes", active=None, **style) -> Axes:
+def plot_boxes(ax, points, half_width, frame="axes", active=None, **style) -> Axes:
     """Draw the tolerance box of every planar sample (see `box_corners`); boxes in `active` (indices) are shaded."""
     check_axes(ax)
     corners = box_corners(points, half_width, frame)
@@ -136,9 +146,12 @@ def plot_error_measures(ax, values, grid=None) -> Axes:
     ax.plot(a, linf / linf_best, color="C3", label=r"$\max |A-g|$ / its minimum")
     ax.plot([mean], [1.0], "o", color="C0")
     ax.plot([midrange], [1.0], "s", color="C3")
-    ax.annotate(f"mean {mean:.3g}", (mean, 1.0), xytext=(-10, 12), textcoords="offset points", color="C0", fontsize=8)
-    ax.annotate(f"midrange {midrange:.3g}", (midrange, 1.0), xytext=(4, -14), textcoords="offset points",
-                color="C3", fontsize=8)
+    # Both labels under the common minimum 1, where neither curve goes: the smaller minimiser's to the left.
+    mean_left = mean <= midrange
+    for value, text, color, on_left in ((mean, f"mean {mean:.3g}", "C0", mean_left),
+                                        (midrange, f"midrange {midrange:.3g}", "C3", not mean_left)):
+        ax.annotate(text, (value, 1.0), xytext=(-4 if on_left else 4, -13), textcoords="offset points", color=color,
+                    fontsize=8, ha="right" if on_left else "left", va="center")
     ax.plot(g, np.full(len(g), 0.0), "|", color="0.3", markersize=12)
     ax.set_ylim(-0.2, 4.0)
     ax.set_xlabel("A")

@@ -220,6 +220,7 @@ class FittingExplorer(TwoPanels, Explorer):
         lower.vlines(np.unique(state["knots"]), low, high, color="0.85", linewidth=0.8, zorder=0)
         lower.set_xlim(state["ts"][0], state["ts"][-1])
         lower.set_xlabel("parameter t (grey lines: knots; stems at the parameters τ_k)", fontsize=8)
+        lower.set_ylabel("κ(t); stems: residuals", fontsize=8)
         lower.locator_params(nbins=4)
 
     def describe(self, state: dict) -> str:
@@ -371,7 +372,7 @@ class BoxFitExplorer(Explorer):
         self.degree = 3
         controls = {
             "half_width": _slider(widgets.FloatSlider, "half size", min=0.05, max=0.6, step=0.01, value=0.15),
-            "frame": widgets.Dropdown(description="boxes", options=["axes", "curve"], value="axes"),
+            "frame": widgets.Dropdown(description="boxes", options=["axes", "curve", "fit"], value="axes"),
             "along": _slider(widgets.FloatSlider, "× along t", min=1.0, max=4.0, step=0.25, value=2.0),
             "count": _slider(widgets.IntSlider, "control pts", min=6, max=14, value=10),
         }
@@ -384,16 +385,20 @@ class BoxFitExplorer(Explorer):
         lsq_fit = least_squares_fit(self.points, self.params, knots, self.degree)
         control = box_faired_fit(self.points, self.params, knots, self.degree, sizes, frame=frame)
         offsets = de_boor(control, knots, self.params) - self.points
-        if frame == "curve":
-            tangents, normals = estimate_frames(self.points)
+        frames = "axes"
+        if frame != "axes":  # the notes' estimate from neighbouring samples, or the tangents of the first fit
+            frames = estimate_frames(self.points) if frame == "curve" else estimate_frames(
+                self.points, lsq_fit, knots, self.params)
+            tangents, normals = frames
             offsets = np.column_stack([np.sum(offsets * tangents, axis=1), np.sum(offsets * normals, axis=1)])
         active = np.flatnonzero(np.any(np.abs(offsets) > sizes * (1 - 1e-4), axis=1))
-        return {"knots": knots, "sizes": sizes, "lsq_fit": lsq_fit, "control": control, "active": active,
+        return {"knots": knots, "sizes": sizes, "frames": frames, "lsq_fit": lsq_fit, "control": control,
+                "active": active,
                 "energy": fairing_energy(control, knots), "energy_lsq": fairing_energy(lsq_fit, knots),
                 "lsq": fit_error(self.points, self.params, control, knots)[0]}
 
     def draw(self, ax, state: dict) -> None:
-        plot_boxes(ax, self.points, state["sizes"], self.values["frame"], active=state["active"])
+        plot_boxes(ax, self.points, state["sizes"], state["frames"], active=state["active"])
         plot_fit(ax, state["lsq_fit"], state["knots"], polygon=False, label="least squares", color="0.6",
                  linewidth=1.2, linestyle="--")
         plot_samples(ax, self.points)
@@ -410,14 +415,17 @@ class BoxFitExplorer(Explorer):
 
 
 def box_fit_explorer(points=None) -> BoxFitExplorer:
-    """Sliders `half_width`, `along` (tangential stretch of "curve" boxes), `count`; dropdown `frame`. Notes §11.4.2.
+    """Sliders `half_width`, `along` (tangential stretch of tangent boxes), `count`; dropdown `frame`. Notes §11.4.2.
 
     points: planar samples (M, 2), default the course's uneven half ellipse with
     chord-length parameters. Each sample gets a box of half size `half_width`
-    (and `along` × that along the tangent for frame "curve"); the cubic with
+    (and `along` × that along the tangent for frame "curve", the notes' tangent
+    estimate from neighbouring samples, or "fit", the tangent of the least-squares
+    fit at the sample's parameter); the cubic with
     `count` control points of least bending energy through all boxes is found
     by `approximation.box_faired_fit`. Boxes too small to reach are a
-    ValueError. `update` returns {"knots", "sizes" (M, 2), "lsq_fit",
+    ValueError. `update` returns {"knots", "sizes" (M, 2), "frames" ("axes" or
+    the pair (tangents, normals) of the boxes), "lsq_fit",
     "control", "active" (indices of the boxes the curve touches), "energy",
     "energy_lsq", "lsq"}.
     """

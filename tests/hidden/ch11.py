@@ -266,6 +266,7 @@ def constrained_fit_cases(rng):
                                    target_params)))
     cases += [
         Case(BAD, (CUBIC_DATA, X7, cubic_knots, 3, 0.1, np.zeros((5, 2)), np.linspace(0, 1, 5))),  # I > c
+        Case(BAD, (CUBIC_DATA, X7, cubic_knots, 3, 0.1, np.zeros((0, 2)), np.zeros(0))),  # no targets, I = 0
         Case(BAD, (CUBIC_DATA, X7, cubic_knots, 3, 0.1, [[0.0, 0.0], [1.0, 1.0]], [0.5, 0.5])),  # repeated
         Case(BAD, (CUBIC_DATA, X7, cubic_knots, 3, 0.1, [[0.0, 0.0]], [1.5])),  # outside the domain
         Case(BAD, (CUBIC_DATA, X7, cubic_knots, 3, 0.1, [[0.0, 0.0]], [0.2, 0.4])),  # lengths differ
@@ -357,13 +358,13 @@ EXERCISES = [
         compare=close(1e-7, 1e-7),
         hint="Solve [[NᵀN + λ M_fair, Cᵀ], [C, 0]] [P; μ] = [NᵀQ; R] with C[i, j] = N_j(v_i) (I × c) and "
         "return P only (the first c rows). The targets are met exactly, not approximately: no large penalty "
-        "weights. More targets than control points, or a singular system, is a ValueError.",
+        "weights. No targets, more targets than control points, or a singular system, is a ValueError.",
         rules={
             EDGE: "The curve must pass through the targets exactly, so treating them as samples with a large weight "
                 "is not good enough.",
             BAD: "Raise a `ValueError` for the bad inputs of exercise 11.5 (samples and parameters of different "
                 "lengths, a parameter outside the domain, bad knots or degree, a negative weight, a positive "
-                "weight with `degree` 1), if there are more targets than control points, `targets` and "
+                "weight with `degree` 1), if there are no targets or more targets than control points, `targets` and "
                 "`target_params` differ in length, the targets have another dimension than the samples, a target "
                 "parameter lies outside the domain, or the block system is singular",
         },

@@ -181,12 +181,29 @@ def test_clustered_parameters_fail_schoenberg_whitney_with_uniform_knots():
     chosen = ap.schoenberg_whitney(params, knots, 3)
     assert np.isnan(chosen[6:]).all() and not np.isnan(chosen[:6]).any()
     points = np.column_stack([params, np.sin(params)])
-    with pytest.raises(ValueError, match=r"^params: the normal equations are singular: the basis function N_6\b"):
+    with pytest.raises(ValueError, match=r"^params: the normal equations are singular: the basis function N_6, "
+                                         r"nonzero on \(0\.6, 1\),"):
         ap.least_squares_fit(points, params, knots, 3)
     averaged = ap.fitting_knots(params, 8, 3, "averaging")
     assert not np.isnan(ap.schoenberg_whitney(params, averaged, 3)).any()
     ap.least_squares_fit(points, params, averaged, 3)
     ap.faired_fit(points, params, knots, 3, 1e-6)  # any positive weight pins the rest down
+
+
+def test_the_singular_message_gives_the_support_open_except_at_clamped_ends():
+    # Quadratic, knots [0, 0, 0.5, 1, 1] (c = 4): N_0 lives on [0, 0.5) (it is 1 at the clamped start),
+    # N_3 on (0.5, 1] (1 at the clamped end), and nothing at or after 0.5 leaves N_3 without a parameter.
+    knots = [0.0, 0.0, 0.5, 1.0, 1.0]
+    late = np.array([0.6, 0.7, 0.8, 0.9])
+    with pytest.raises(ValueError, match=r"the basis function N_0, nonzero on \[0, 0\.5\),"):
+        ap.least_squares_fit(late[:, None], late, knots, 2)
+    early = np.array([0.0, 0.1, 0.2, 0.3])
+    with pytest.raises(ValueError, match=r"the basis function N_3, nonzero on \(0\.5, 1\],"):
+        ap.least_squares_fit(early[:, None], early, knots, 2)
+    # Without clamped ends (knots 0, 1, 2, 3, 4, domain [1, 3]) the supports are open at both ends.
+    inner = np.array([1.0, 1.2, 1.4, 1.6])
+    with pytest.raises(ValueError, match=r"the basis function N_3, nonzero on \(2, 4\),"):
+        ap.least_squares_fit(inner[:, None], inner, [0.0, 1.0, 2.0, 3.0, 4.0], 2)
 
 
 def test_a_knot_span_without_parameters_can_leave_the_fit_unique():
@@ -615,6 +632,38 @@ def test_estimate_frames():
         ap.estimate_frames([[0.0, 0.0], [1.0, 1.0], [0.0, 0.0]])
     with pytest.raises(ValueError, match="^points: tangent and normal boxes are planar"):
         ap.estimate_frames(np.zeros((3, 3)))
+
+
+def test_estimate_frames_from_a_first_fit():
+    points, params, knots, n = arc_problem()
+    fit = ap.least_squares_fit(points, params, knots, n)
+    tangents, normals = ap.estimate_frames(points, fit, knots, params)
+    speed = derivative(fit, knots, params, 1)
+    np.testing.assert_allclose(tangents, speed / np.linalg.norm(speed, axis=1)[:, None], atol=1e-14)
+    np.testing.assert_allclose(normals, np.column_stack([-tangents[:, 1], tangents[:, 0]]), atol=0)
+    # The notes' estimate Q_(k+1) - Q_(k-1) is poor where neighbours are closer than the noise:
+    # at the last sample of the course's uneven arc it is over 45° off the fit's tangent.
+    notes_tangents, _ = ap.estimate_frames(points)
+    cosines = np.abs(np.sum(notes_tangents * tangents, axis=1))
+    assert cosines[-1] < np.cos(np.radians(45)) and np.median(cosines) > np.cos(np.radians(10))
+    with pytest.raises(ValueError, match="^params: expected one parameter per sample"):
+        ap.estimate_frames(points, fit, knots, params[:-1])
+    with pytest.raises(ValueError, match="^control_points: expected a planar curve"):
+        ap.estimate_frames(points, np.zeros((len(fit), 3)), knots, params)
+    with pytest.raises(ValueError, match="^points: no tangent at sample 0: the curve's tangent vanishes"):
+        ap.estimate_frames([[0.0, 0.0], [1.0, 0.0]], [[0.0, 0.0], [0.0, 0.0], [1.0, 0.0]], [0, 0, 1, 1], [0.0, 1.0])
+
+
+def test_curve_boxes_along_the_fit_bound_the_deviations_in_the_fit_frames():
+    points, params, knots, n = arc_problem()
+    sizes = np.tile([0.3, 0.1], (len(points), 1))
+    fit = ap.box_faired_fit(points, params, knots, n, sizes, frame="fit")
+    tangents, normals = ap.estimate_frames(points, ap.least_squares_fit(points, params, knots, n), knots, params)
+    offset = de_boor(fit, knots, params) - points
+    assert np.abs(np.sum(offset * tangents, axis=1)).max() <= 0.3 * (1 + 1e-6)
+    assert np.abs(np.sum(offset * normals, axis=1)).max() <= 0.1 * (1 + 1e-6)
+    notes = ap.box_faired_fit(points, params, knots, n, sizes, frame="curve")
+    assert ap.fairing_energy(fit, knots) < ap.fairing_energy(notes, knots)
 
 
 def test_axis_boxes_of_the_course_example():
