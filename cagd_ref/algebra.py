@@ -20,12 +20,19 @@ Implicit equations and inversion formulas are defined up to a common factor.
 The resultant follows Sylvester (and SymPy, see `resultant`): `resultant(f, g)` is the
 determinant of the Sylvester matrix, which for monic f, g is the product of
 the differences of their roots. The notes build the resultant as the
-determinant of the Bézout matrix instead (`bezout_matrix`); for two
-polynomials of degree n the two differ by the sign (-1)^(n(n-1)/2).
+determinant of the Bézout matrix instead (`bezout_matrix`). The two are
+conventions, tied by det Bez(f, g) = (-1)^(n(n-1)/2) a_n^(n-m) Res(f, g) for f of
+degree n and g of degree m <= n (chapter 19 meets the same pair in the
+discriminant).
 Implicitization from the control points (`bezout_lines`, `implicitize`) is the
 same Bézout construction applied to lines l_ij = C(n,i) C(n,j) (H_i × H_j) of
 the homogeneous control points H_i = w_i (x_i, y_i, 1); chapter 18 (moving
 lines) builds on it.
+
+The functions ending in `_plain` (`resultant_plain`, `bezout_matrix_plain`,
+`poly_gcd_plain`, `implicitize_plain`, `inversion_plain`, `invert_plain`,
+`intersect_implicit_plain`) are the textbook forms of the algorithms, the
+code the chapter shows; the tests check that they agree with the tuned ones.
 
 Everything here is NumPy; the chapter checks it against SymPy's exact
 `resultant`, `gcd` and `groebner`.
@@ -43,31 +50,42 @@ from numpy.polynomial import polynomial as P
 from ._validation import as_count, as_float_array, as_points, as_scalar, as_tolerance
 from .bezier import elevate, evaluate, to_homogeneous
 from .intersection import curve_implicit_bernstein
-from .polynomials import bernstein_multiply
+from .polynomials import bernstein_multiply, bernstein_to_power
 from .roots import bernstein_roots
 
 __all__ = [
+    "coefficients",
+    "homogeneous_points",
     "sylvester_matrix",
     "resultant",
+    "resultant_plain",
     "root_product",
     "bezout_matrix",
+    "bezout_from_brackets",
+    "bezout_matrix_plain",
     "fraction_free_eliminate",
     "cramer_null_vector",
     "common_root_count",
     "euclid_steps",
     "poly_gcd",
+    "poly_gcd_plain",
     "common_roots",
     "l_lines",
     "bezout_lines",
     "power_bezout_lines",
     "implicitize",
+    "line_determinant",
+    "implicitize_plain",
     "implicitize_power",
     "implicit_eval",
     "cubic_inversion_lines",
     "inversion",
     "invert",
+    "inversion_plain",
+    "invert_plain",
     "intersection_polynomial",
     "intersect_implicit",
+    "intersect_implicit_plain",
     "surface_implicit_degree",
     "term_count",
     "sort_terms",
@@ -99,6 +117,30 @@ def _nonzero_poly(f, name: str) -> np.ndarray:
     if not c.any():
         raise ValueError(f"{name}: the zero polynomial has no degree (every number is a root of it)")
     return c
+
+
+def coefficients(f, name: str = "f", zero_ok: bool = False) -> np.ndarray:
+    """Ascending power coefficients (n+1,) of a polynomial, trailing zeros dropped: its true degree is n. Notes §17.3.
+
+    Rejects what is not a 1-D array of finite numbers, and the zero polynomial
+    (which has no degree) unless `zero_ok`, which gives it as [0.].
+
+    >>> coefficients([12, -7, 1, 0]).tolist()          # t² - 7t + 12
+    [12.0, -7.0, 1.0]
+    """
+    return _poly(f, name) if zero_ok else _nonzero_poly(f, name)
+
+
+def homogeneous_points(points, weights=None, name: str = "points", weights_name: str = "weights") -> np.ndarray:
+    """The homogeneous control points H_i = w_i (x_i, y_i, 1), (n+1, 3), of a planar rational Bézier curve. §17.6.
+
+    points: (n+1, 2) with n >= 1; weights: None (all 1) or (n+1,) nonzero.
+    Errors name the arguments as `name` and `weights_name`.
+
+    >>> homogeneous_points([(4.0, 1.0), (5.0, 6.0)], [1.0, 2.0]).tolist()
+    [[4.0, 1.0, 1.0], [10.0, 12.0, 2.0]]
+    """
+    return _homogeneous(points, weights, name, weights_name)
 
 
 def _homogeneous(points, weights, name: str = "points", weights_name: str = "weights") -> np.ndarray:
@@ -140,17 +182,26 @@ def _sylvester(a: np.ndarray, b: np.ndarray) -> np.ndarray:
 
 
 def sylvester_matrix(f, g) -> np.ndarray:
-    """The Sylvester matrix (m+n, m+n) of f (degree m) and g (degree n), ascending power coefficients. Notes §17.3.
+    """The Sylvester matrix (n+m, n+m) of f (degree n) and g (degree m), ascending power coefficients. Notes §17.3.
 
-    Its first n rows hold f's coefficients from the highest power down, each
-    row shifted one column right of the one above; the last m rows do the same
-    for g. Its determinant is the resultant (`resultant`). Trailing zeros of f
-    and g are dropped first; the zero polynomial is rejected.
+    Its first m rows hold f's coefficients from the highest power down, each
+    row shifted one column right of the one above (the polynomials t^(m-1) f,
+    ..., t f, f); the last n rows do the same for g. A row vector (u, v) times
+    it gives the coefficients of u f + v g (deg u < m, deg v < n). Its
+    determinant is the resultant (`resultant`). Trailing zeros of f and g are
+    dropped first; the zero polynomial is rejected.
 
     >>> sylvester_matrix([12.0, -7.0, 1.0], [2.0, -3.0, 1.0]).tolist()
     [[1.0, -7.0, 12.0, 0.0], [0.0, 1.0, -7.0, 12.0], [1.0, -3.0, 2.0, 0.0], [0.0, 1.0, -3.0, 2.0]]
     """
-    return _sylvester(_nonzero_poly(f, "f"), _nonzero_poly(g, "g"))
+    a, b = coefficients(f, "f"), coefficients(g, "g")  # trailing zeros dropped
+    n, m = len(a) - 1, len(b) - 1  # the degrees of f and g
+    s = np.zeros((n + m, n + m))
+    for r in range(m):  # the m rows of f: t^(m-1) f, ..., t f, f
+        s[r, r : r + n + 1] = a[::-1]  # highest power first
+    for r in range(n):  # the n rows of g: t^(n-1) g, ..., t g, g
+        s[m + r, r : r + m + 1] = b[::-1]
+    return s
 
 
 def _resultant(a: np.ndarray, b: np.ndarray) -> float:
@@ -175,15 +226,18 @@ def _resultant(a: np.ndarray, b: np.ndarray) -> float:
 def resultant(f, g) -> float:
     """The resultant Res(f, g), Sylvester's determinant (the sign of SymPy's `resultant`). Notes §17.3.
 
-    f, g: ascending power coefficients (m+1,) and (n+1,), trailing zeros
+    f, g: ascending power coefficients (n+1,) and (m+1,), trailing zeros
     dropped (the true degrees count). Res(f, g) = 0 exactly when f and g have a
     common root (their leading coefficients being nonzero by construction).
-    For f = a ∏(t - f_i), g = b ∏(t - g_j) it equals aⁿ bᵐ ∏∏ (f_i - g_j),
-    so Res(g, f) = (-1)^(mn) Res(f, g); a constant c gives Res(c, g) = cⁿ and
-    Res(c1, c2) = 1. The zero polynomial is rejected.
+    For f = a ∏(t - f_i), g = b ∏(t - g_j) it equals aᵐ bⁿ ∏∏ (f_i - g_j),
+    so Res(g, f) = (-1)^(mn) Res(f, g); a constant c gives Res(c, g) = cᵐ and
+    Res(c1, c2) = 1. The zero polynomial is rejected. The determinant is taken
+    of the matrix scaled by powers of two (exact), so that high degrees neither
+    overflow nor lose digits; `resultant_plain` is the same without the scaling.
 
-    The notes' determinants are Bézout's (`bezout_matrix`): for degrees n = n
-    they equal (-1)^(n(n-1)/2) Res(f, g), so the notes' -1611 is 1611 here.
+    The notes' determinants are Bézout's (`bezout_matrix`), another convention:
+    det Bez = (-1)^(n(n-1)/2) a_nⁿ⁻ᵐ Res(f, g), so the notes' -1611 for two cubics
+    is the Bézout value of the resultant that is 1611 here.
 
     SymPy's `resultant(f, g, t)` agrees except when deg f < deg g and both
     degrees are odd: it then returns Res(g, f) = -Res(f, g) (sympy/sympy#10666,
@@ -199,6 +253,15 @@ def resultant(f, g) -> float:
     0.0
     """
     return _resultant(_nonzero_poly(f, "f"), _nonzero_poly(g, "g"))
+
+
+def resultant_plain(f, g) -> float:
+    """Res(f, g) as the determinant of the Sylvester matrix: the plain form of `resultant`. Notes §17.3.
+
+    >>> round(resultant_plain([1.0, 3.0, -2.0, 1.0], [4.0, -1.0, 3.0, 2.0]), 6)
+    1611.0
+    """
+    return float(np.linalg.det(sylvester_matrix(f, g)))
 
 
 def _roots(values, name: str) -> np.ndarray:
@@ -284,6 +347,45 @@ def bezout_matrix(f, g) -> np.ndarray:
     return _bezout_forms(rows)[:, :, 2] + 0.0
 
 
+def bezout_from_brackets(brackets) -> np.ndarray:
+    """The n×n Bézout matrix assembled from its brackets (n+1, n+1, ...): the rule (17.8). Notes §17.3, §17.6.
+
+    brackets[k, m] is the bracket (a_k b_m) = a_k b_m - a_m b_k of two
+    polynomials of degree n (a number), or the line l_km of a Bézier curve (an
+    array (3,)). Rows and columns are counted i, j = n-1, ..., 0 from the top
+    left, and entry (i, j) is the sum of brackets[k, m] over m <= min(i, j)
+    with k = i + j + 1 - m <= n.
+
+    >>> bezout_from_brackets(np.array([[0, -1, 2], [1, 0, 3], [-2, -3, 0]])).tolist()   # (a2 b1), (a2 b0); (a1 b0)
+    [[-3.0, -2.0], [-2.0, 1.0]]
+    """
+    brackets = as_float_array(brackets, "brackets")
+    if brackets.ndim < 2 or brackets.shape[0] != brackets.shape[1] or brackets.shape[0] < 1:
+        raise ValueError(f"brackets: expected an array (n+1, n+1, ...), got shape {brackets.shape}")
+    n = len(brackets) - 1
+    matrix = np.zeros((n, n) + brackets.shape[2:])
+    for r, i in enumerate(range(n - 1, -1, -1)):
+        for c, j in enumerate(range(n - 1, -1, -1)):
+            for m in range(min(i, j) + 1):
+                k = i + j + 1 - m
+                if k <= n:
+                    matrix[r, c] += brackets[k, m]
+    return matrix
+
+
+def bezout_matrix_plain(f, g) -> np.ndarray:
+    """The notes' Bézout matrix (17.8) from its brackets: the plain form of `bezout_matrix`. Notes §17.3.
+
+    >>> bezout_matrix_plain([1.0, 3.0, -2.0, 1.0], [4.0, -1.0, 3.0, 2.0]).tolist()
+    [[7.0, -7.0, 2.0], [-7.0, -5.0, -11.0], [2.0, -11.0, 13.0]]
+    """
+    a, b = coefficients(f, "f"), coefficients(g, "g")
+    n = max(len(a), len(b)) - 1
+    a, b = np.pad(a, (0, n + 1 - len(a))), np.pad(b, (0, n + 1 - len(b)))  # the lower degree padded
+    brackets = np.outer(a, b) - np.outer(b, a)  # brackets[k, m] = a_k b_m - a_m b_k
+    return bezout_from_brackets(brackets) + 0.0
+
+
 # --- §17.4 the common root ----------------------------------------------------------------------------------------
 
 
@@ -294,7 +396,7 @@ def _square(matrix, name: str = "matrix") -> np.ndarray:
     return m
 
 
-def fraction_free_eliminate(matrix) -> np.ndarray:
+def fraction_free_eliminate(matrix, tol: float = 1e-14) -> np.ndarray:
     """Row echelon form by fraction-free (Bareiss) elimination: integers stay integers. Notes §17.4.
 
     matrix: (r, c). Step k replaces every entry below and right of the pivot
@@ -303,31 +405,34 @@ def fraction_free_eliminate(matrix) -> np.ndarray:
     negated, to keep the determinant), a column with no pivot is skipped. The
     last pivot of a square nonsingular matrix is its determinant; the number
     of nonzero rows is the rank, so for a Bézout matrix n - rank counts the
-    common roots (`common_root_count`).
+    common roots (`common_root_count`). tol: an entry below tol times the
+    largest one counts as zero when a pivot is sought.
 
     Ref: E. H. Bareiss, Sylvester's identity and multistep integer-preserving Gaussian elimination, Math. Comp. 1968.
 
     >>> fraction_free_eliminate([[7.0, -7.0, 2.0], [-7.0, -5.0, -11.0], [2.0, -11.0, 13.0]]).tolist()
     [[7.0, -7.0, 2.0], [0.0, -84.0, -63.0], [0.0, 0.0, -1611.0]]
     """
-    m = _square(matrix).copy()
+    m = as_float_array(matrix, "matrix")  # a copy: the input is not changed
+    if m.ndim != 2:
+        raise ValueError(f"matrix: expected a 2-D array, got shape {m.shape}")
+    zero = as_tolerance(tol, below_one=True) * np.abs(m).max(initial=0.0)
     rows, cols = m.shape
-    scale = np.abs(m).max(initial=0.0)
-    previous, r = 1.0, 0
+    previous, r = 1.0, 0  # the previous pivot, and the row that gets the next one
     for c in range(cols):
         if r == rows:
             break
-        candidates = np.flatnonzero(np.abs(m[r:, c]) > 1e-14 * scale)
-        if candidates.size == 0:
+        nonzero = np.flatnonzero(np.abs(m[r:, c]) > zero)
+        if nonzero.size == 0:  # no pivot in this column: go on to the next one
             m[r:, c] = 0.0
             continue
-        p = r + int(candidates[0])
-        if p != r:
+        p = r + int(nonzero[0])
+        if p != r:  # swap the pivot row up, negated so that the determinant is kept
             m[[r, p]] = m[[p, r]]
             m[r] = -m[r]
         pivot = m[r, c]
-        below = m[r + 1 :, c + 1 :]
-        m[r + 1 :, c + 1 :] = (pivot * below - np.outer(m[r + 1 :, c], m[r, c + 1 :])) / previous
+        # every entry below and right of the pivot: (M_kk M_ij - M_ik M_kj) / previous pivot, exact for integers
+        m[r + 1 :, c + 1 :] = (pivot * m[r + 1 :, c + 1 :] - np.outer(m[r + 1 :, c], m[r, c + 1 :])) / previous
         m[r + 1 :, c] = 0.0
         previous, r = pivot, r + 1
     m[r:] = 0.0
@@ -437,6 +542,28 @@ def poly_gcd(f, g, tol: float = 1e-9) -> np.ndarray:
     steps = _euclid(a, b, tol)
     last = steps[-1][1] if steps else (a if a.any() else b)
     return last / last[-1] + 0.0
+
+
+def poly_gcd_plain(f, g, tol: float = 1e-9) -> np.ndarray:
+    """The monic GCD by Euclid's algorithm with a relative zero test: the plain form of `poly_gcd`. Notes §17.4.
+
+    >>> poly_gcd_plain([-4.0, -11.0, -1.0, 1.0], [4.0, -5.0, -7.0, 2.0]).round(9).tolist()      # t - 4
+    [-4.0, 1.0]
+    """
+    a = np.trim_zeros(coefficients(f, "f", zero_ok=True), "b")  # the zero polynomial: empty
+    b = np.trim_zeros(coefficients(g, "g", zero_ok=True), "b")
+    tol = as_tolerance(tol, below_one=True)
+    if a.size == 0 and b.size == 0:
+        raise ValueError("f, g: both are the zero polynomial, whose GCD is undefined")
+    if len(a) < len(b):
+        a, b = b, a  # divide the higher degree by the lower
+    while b.size:
+        r = P.polydiv(a, b)[1]
+        zero = tol * max(np.abs(a).max(), np.abs(b).max())  # rounding noise next to a and b
+        while r.size and abs(r[-1]) <= zero:  # drops the noise from the top; all of it: r = 0
+            r = r[:-1]
+        a, b = b, r
+    return a / a[-1]  # the last nonzero remainder, monic
 
 
 def common_roots(f, g, tol: float = 1e-9) -> np.ndarray:
@@ -560,6 +687,46 @@ def implicitize(points, weights=None) -> np.ndarray:
     [[1.0, 0.0, -1.0], [0.0, 0.0, 0.0], [-1.0, 0.0, 0.0]]
     """
     return _implicit_of(_homogeneous(points, weights))
+
+
+def line_determinant(matrix) -> np.ndarray:
+    """The determinant of an (n, n) matrix of lines (a, b, c) = a x + b y + c, as c[i, j] of xⁱ yʲ, (n+1, n+1). §17.6.
+
+    Laplace expansion along the first row, with exact polynomial arithmetic:
+    a line times a polynomial is the polynomial shifted one place along x
+    (times a), one along y (times b), and kept (times c). n! products: the
+    plain form of what `implicitize` computes with every minor reused.
+
+    >>> x, y, x_minus_1 = [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [1.0, 0.0, -1.0]
+    >>> line_determinant([[x, y], [y, x_minus_1]]).tolist()                       # x (x - 1) - y²
+    [[0.0, 0.0, -1.0], [-1.0, 0.0, 0.0], [1.0, 0.0, 0.0]]
+    """
+    matrix = as_float_array(matrix, "matrix")
+    n = len(matrix)
+    if n and matrix.shape != (n, n, 3):
+        raise ValueError(f"matrix: expected lines (n, n, 3), got shape {matrix.shape}")
+    if n == 0:
+        return np.ones((1, 1))
+    total = np.zeros((n + 1, n + 1))
+    for column in range(n):
+        minor = line_determinant(np.delete(matrix[1:], column, axis=1))  # (n, n): degree n - 1
+        a, b, c = matrix[0, column]
+        term = np.zeros((n + 1, n + 1))
+        term[:n, :n] += c * minor
+        term[1:, :n] += a * minor  # a x · minor
+        term[:n, 1:] += b * minor  # b y · minor
+        total += (-1) ** column * term
+    return total + 0.0
+
+
+def implicitize_plain(points, weights=None) -> np.ndarray:
+    """The implicit equation as det of the Bézout matrix of the lines l_ij: the plain form of `implicitize`. §17.6.
+
+    >>> implicitize_plain([(1.0, -2.0), (1.0, -1.0), (2.0, 1.0)]).tolist()     # -(x² - 2xy + y² - 10x + 6y + 13)
+    [[-13.0, -6.0, -1.0], [10.0, 2.0, 0.0], [-1.0, 0.0, 0.0]]
+    """
+    lines = l_lines(points, weights)  # lines[i, j] = l_ij = C(n,i) C(n,j) H_i × H_j, the brackets
+    return line_determinant(bezout_from_brackets(lines))
 
 
 def _implicit_of(h: np.ndarray, name: str = "points") -> np.ndarray:
@@ -829,6 +996,72 @@ def invert(points, xy, weights=None, tol: float = 1e-9) -> float | np.ndarray:
     return float(ts[0]) if single else ts
 
 
+def inversion_plain(points, weights=None) -> tuple[np.ndarray, np.ndarray]:
+    """An inversion formula t = num/den by linear algebra, (17.15)-(17.20) in the power basis: the plain form. §17.7.
+
+    For a curve of degree n >= 2, num and den have degree k = max(1, n - 2)
+    (arrays (k+1, k+1), c[i, j] of xⁱ yʲ). Their coefficients are a null
+    vector of the linear system t·den(X, Y, W) - num(X, Y, W) ≡ 0, with
+    X(t), Y(t), W(t) the homogeneous curve in the power basis and every
+    monomial made homogeneous, xⁱ yʲ -> Xⁱ Yʲ W^(k-i-j). For n = 2 and n = 3
+    the null space has the dimensions 2 and 1; from n = 4 on it is larger, and
+    the last singular vector is one member of it (`inversion` chooses the member
+    best conditioned on [0, 1]). A line (n = 1) has degenerate members (num =
+    den = the line itself): ValueError, `inversion` projects onto the chord.
+
+    >>> num, den = inversion_plain([(4.0, 1.0), (5.0, 6.0), (5.0, 0.0), (6.0, 4.0)], [1.0, 2.0, 2.0, 1.0])
+    >>> (np.round(156 * num / den[1, 0], 6) + 0).tolist()        # (1089 x - 172 y - 4184) / (156 x - 8 y + 758)
+    [[-4184.0, -172.0], [1089.0, 0.0]]
+    """
+    h = bernstein_to_power(homogeneous_points(points, weights))  # X, Y, W: ascending power coefficients in t
+    n = len(h) - 1
+    if n < 2:
+        raise ValueError("points: a line (n = 1) has no unique inversion by this system; `inversion` handles it")
+    k = max(1, n - 2)
+    monomials = [(i, j) for i in range(k + 1) for j in range(k + 1 - i)]
+    size = k * n + 2  # coefficients of t·den - num: degree k n + 1
+    values = []  # each monomial X^i Y^j W^(k-i-j) as a polynomial in t
+    for i, j in monomials:
+        value = np.ones(1)
+        for column, power in ((0, i), (1, j), (2, k - i - j)):
+            for _ in range(power):
+                value = np.convolve(value, h[:, column])
+        values.append(value)
+    den_columns = [np.pad(np.concatenate([[0.0], v]), (0, size - len(v) - 1)) for v in values]  # t · monomial
+    num_columns = [-np.pad(v, (0, size - len(v))) for v in values]
+    null = np.linalg.svd(np.column_stack(den_columns + num_columns))[2][-1]  # the (last) null vector
+    num, den = np.zeros((k + 1, k + 1)), np.zeros((k + 1, k + 1))
+    for index, (i, j) in enumerate(monomials):
+        den[i, j], num[i, j] = null[index], null[len(monomials) + index]
+    return num, den
+
+
+def invert_plain(points, xy, weights=None, tol: float = 1e-9) -> float | np.ndarray:
+    """The parameter of a point (2,) or points (k, 2) of a curve of degree n >= 2, from `inversion_plain`. §17.7.
+
+    The plain form of `invert`: one formula for every point.
+
+    A point where num and den both vanish (to tol times their size there) is a
+    double point: ValueError.
+
+    >>> invert_plain([(1.0, 0.0), (5.0, 0.0), (5.0, 2.0), (4.0, 3.0)], [[4.375, 1.125], [-26.0, 9.0]]).round(9).tolist()
+    [0.5, -1.0]
+    """
+    num, den = inversion_plain(points, weights)
+    pts = as_float_array(xy, "xy")
+    single = pts.shape == (2,)  # one point gives a number
+    if not single and (pts.ndim != 2 or pts.shape[1] != 2):
+        raise ValueError(f"xy: expected a point (2,) or points (k, 2), got shape {pts.shape}")
+    tol = as_tolerance(tol, below_one=True)
+    x, y = pts.reshape(-1, 2).T
+    top, bottom = P.polyval2d(x, y, num), P.polyval2d(x, y, den)
+    # the size of the terms at each point: values below tol times it are zero to rounding
+    size = P.polyval2d(np.maximum(np.abs(x), 1), np.maximum(np.abs(y), 1), np.abs(num) + np.abs(den))
+    if np.any((np.abs(top) <= tol * size) & (np.abs(bottom) <= tol * size)):
+        raise ValueError("xy: num = den = 0 at a double point of the curve, which two parameters reach")
+    return float(top[0] / bottom[0]) if single else top / bottom
+
+
 # --- §17.8 intersection by implicitization ------------------------------------------------------------------------
 
 
@@ -907,6 +1140,38 @@ def intersect_implicit(p, q, p_weights=None, q_weights=None, tol: float = 1e-9) 
     return np.array(sorted(rows), dtype=float).reshape(-1, 2)
 
 
+def intersect_implicit_plain(p, q, p_weights=None, q_weights=None, tol: float = 1e-9) -> np.ndarray:
+    """Intersections (t, u), (k, 2), by implicitization, the four steps of §17.8: the plain form. Notes §17.8.
+
+    Assumes no intersection at a double point of P (where `invert` has no
+    single answer); `intersect_implicit` handles those and curves on one
+    implicit curve.
+
+    >>> intersect_implicit_plain([(0.0, 0.0), (1.0, 1.0)], [(0.0, 1.0), (1.0, 0.0)]).tolist()
+    [[0.5, 0.5]]
+    """
+    homogeneous_points(p, p_weights, "p", "p_weights")  # the input checked, errors naming p and p_weights
+    X, Y, W = homogeneous_points(q, q_weights, "q", "q_weights").T  # Q's H_k, the Bernstein coefficients
+    tol = as_tolerance(tol, below_one=True)
+    f = implicitize(p, p_weights)  # 1. P's implicit equation, degree m
+    m, n = len(f) - 1, len(X) - 1
+    g = np.zeros(m * n + 1)  # 2. g(u) = Σ c_ij X^i Y^j W^(m-i-j), degree m n
+    for i in range(m + 1):
+        for j in range(m + 1 - i):
+            term = np.ones(1)
+            for factor, power in ((X, i), (Y, j), (W, m - i - j)):
+                for _ in range(power):
+                    term = bernstein_multiply(term, factor)
+            g += f[i, j] * term
+    us = bernstein_roots(g)  # 3. its real roots in [0, 1]
+    if us.size == 0:
+        return np.zeros((0, 2))
+    ts = np.atleast_1d(invert(p, evaluate(q, us, q_weights), p_weights))  # 4. each point's t on P
+    keep = (ts >= -tol) & (ts <= 1 + tol)
+    rows = np.column_stack([np.clip(ts[keep], 0.0, 1.0), us[keep]])
+    return rows[np.lexsort((rows[:, 1], rows[:, 0]))]
+
+
 # --- §17.9-17.11 surfaces and term orders -------------------------------------------------------------------------
 
 
@@ -915,7 +1180,9 @@ def surface_implicit_degree(kind: str, degree, base_points: int = 0) -> int:
 
     kind: "triangular" with `degree` an integer n, or "tensor" with `degree`
     a pair (m, n). A generic line meets the surface in as many points as two
-    plane sections meet in parameter space (Bézout: n² or 2mn); every simple
+    plane sections meet in parameter space: n² by Bézout's theorem for two
+    curves of degree n, 2mn for two curves of bidegree (m, n) (Bézout's count
+    (m+n)², less m² and n² at the two points at infinity of the axes); every simple
     base point (a parameter where x = y = z = w = 0) is one of those
     intersections that maps to no point, and lowers the degree by one.
     Notes §17.9, §17.10.

@@ -16,7 +16,13 @@ from ._style import check_axes, finish_planar
 from .algebraic import plot_implicit
 from .curves import bezier_samples
 
-__all__ = ["plot_sign_regions", "plot_extended_curve", "plot_intersection_polynomial", "plot_polynomials"]
+__all__ = [
+    "plot_sign_regions",
+    "plot_extended_curve",
+    "plot_intersection_polynomial",
+    "plot_polynomial_window",
+    "plot_polynomials",
+]
 
 # Light colours of the two sides of an implicit curve: f < 0 and f > 0.
 SIGN_COLOURS = ListedColormap(["#dbe7f5", "#f8e3d0"])
@@ -98,6 +104,27 @@ def plot_intersection_polynomial(ax, coeffs, roots=(), **style) -> Axes:
         ax.set_yticks([v for v in ticks if v == 0 or abs(v) > 3 * band], minor=False)
         ax.yaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))
         ax.yaxis.set_minor_locator(NullLocator())
+    ax.set_xlabel("u")
+    return ax
+
+
+def plot_polynomial_window(ax, coeffs, window, roots=(), **style) -> Axes:
+    """g(u) = Σ g_i B_i^N(u) / max |g_i| over a part `window` of [0, 1], on a linear scale, roots marked. §17.8.
+
+    The close-up of `plot_intersection_polynomial`: where two roots lie too close
+    together to be told apart on [0, 1], this shows the graph between them.
+    """
+    check_axes(ax)
+    g = as_float_array(coeffs, "coeffs")
+    u0, u1 = as_interval(window, "window")
+    scale = np.abs(g).max() or 1.0
+    us = np.linspace(u0, u1, 300)
+    ax.axhline(0.0, color="0.6", linewidth=0.8)
+    ax.plot(us, bezier.evaluate((g / scale)[:, None], us)[:, 0], **{"color": "C2", "linewidth": 2.0, **style})
+    roots = np.asarray(roots, dtype=float)
+    roots = roots[(roots >= u0) & (roots <= u1)]
+    ax.plot(roots, np.zeros_like(roots), "o", color="C3", markersize=5)
+    ax.set_xlim(u0, u1)
     ax.set_xlabel("u")
     return ax
 

@@ -207,7 +207,7 @@ class CommonRootExplorer(Explorer):
         return (
             f"f(t) = {html.escape(_polynomial_text(state['f']))}<br>g(t) = {html.escape(_polynomial_text(state['g']))}"
             f"<br>Bézout matrix:{_matrix_html(state['bezout'])}"
-            f"det = {state['bezout_determinant']:.6g} (Bézout, the notes' sign)<br>"
+            f"det Bez = {state['bezout_determinant']:.6g} (Bézout's convention, the notes'; for two cubics -Res)<br>"
             f"Res(f, g) = {state['resultant']:.6g} (Sylvester) = a³b³ ∏(fᵢ − gⱼ) = {state['root_product']:.6g}<br>"
             f"rank {state['rank']}: {state['common_count']} common root(s); "
             f"gcd = {html.escape(_polynomial_text(state['gcd']))}"

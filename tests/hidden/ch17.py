@@ -311,8 +311,8 @@ EXERCISES = [
         reference=algebra.resultant,
         cases=resultant_cases,
         compare=close(1e-8, 1e-8),
-        hint="Build the Sylvester matrix: n = deg g rows of f's coefficients from the highest power down, each "
-        "shifted one column right, then m = deg f rows of g's; its determinant is Res(f, g). Drop trailing zeros "
+        hint="Build the Sylvester matrix: m = deg g rows of f's coefficients from the highest power down, each "
+        "shifted one column right, then n = deg f rows of g's; its determinant is Res(f, g). Drop trailing zeros "
         "first; a constant c gives c^(deg of the other).",
         rules={
             EDGE: "A constant counts as degree 0: $\\operatorname{Res}(c, g)=c^{\\deg g}$, $\\operatorname{Res}(f, "

@@ -78,14 +78,58 @@ def test_the_notes_resultants(name):
         assert al.root_product(*e.args("f_roots", "g_roots")) == pytest.approx(e.results["resultant"])
 
 
-def test_the_sign_between_bezout_and_sylvester_is_the_notes_erratum():
+def test_the_notes_minus_1611_is_the_bezout_convention_of_the_resultant_1611():
     e = ex("cubic_no_root")
     bezout = al.bezout_matrix(*e.args("f", "g"))
     np.testing.assert_array_equal(bezout, e.results["bezout"])
-    assert np.linalg.det(bezout) == pytest.approx(e.results["bezout_determinant"])
-    assert e.errata["resultant"].notes == e.results["bezout_determinant"]
-    assert al.resultant(*e.args("f", "g")) == pytest.approx(e.errata["resultant"].correct)
+    assert np.linalg.det(bezout) == pytest.approx(e.results["bezout_determinant"]) == -1611
+    assert al.resultant(*e.args("f", "g")) == pytest.approx(e.results["resultant"]) == 1611
+    assert not e.errata  # a convention, not an erratum
     assert np.linalg.det(al.bezout_matrix(*ex("root_product").args("f", "g"))) == pytest.approx(-12)
+
+
+def test_bezout_and_sylvester_are_tied_by_sign_and_leading_coefficient():
+    """det Bez(f, g) = (-1)^(n(n-1)/2) a_n^(n-m) Res(f, g) for deg f = n >= m = deg g, as chapter 19 uses it."""
+    rng = np.random.default_rng(1719)
+    for n in range(1, 7):
+        for m in range(0, n + 1):
+            f, g = rng.integers(-5, 6, n + 1).astype(float), rng.integers(-5, 6, m + 1).astype(float)
+            f[-1], g[-1] = float(rng.choice([-3, -2, 2, 3])), float(rng.choice([-2, -1, 1, 2]))
+            exact = sylvester(sym(f), sym(g), t, method=1).det() if m else sp.Integer(int(g[0])) ** n
+            expected = (-1) ** (n * (n - 1) // 2) * int(f[-1]) ** (n - m) * exact
+            assert np.linalg.det(al.bezout_matrix(f, g)) == pytest.approx(float(expected), rel=1e-9, abs=1e-6)
+    # the notes' discriminant of chapter 19: 2t² + 3t - 5 against its derivative 4t + 3
+    assert np.linalg.det(al.bezout_matrix([-5.0, 3.0, 2.0], [3.0, 4.0])) == pytest.approx(196)
+    assert al.resultant([-5.0, 3.0, 2.0], [3.0, 4.0]) == pytest.approx(-98)
+
+
+def test_the_proof_of_the_sign_the_row_combination_of_the_sylvester_matrix():
+    """[-B1, A1] Syl = [0, J Bez] for equal degrees: the rows of Bez are combinations of the rows of Syl."""
+    rng = np.random.default_rng(17)
+    for n in range(1, 7):
+        f, g = rng.integers(-5, 6, (2, n + 1)).astype(float)
+        f[-1], g[-1] = 2.0, -3.0
+        s = al.sylvester_matrix(f, g)
+        a1, b1 = s[:n, :n], s[n:, :n]
+        np.testing.assert_allclose(a1 @ b1, b1 @ a1)  # both upper triangular Toeplitz: they commute
+        combined = np.hstack([-b1, a1]) @ s
+        np.testing.assert_allclose(combined[:, :n], 0, atol=1e-12)
+        np.testing.assert_allclose(combined[:, n:], al.bezout_matrix(f, g)[::-1], atol=1e-9)
+
+
+def test_the_sylvester_matrix_is_the_map_u_f_plus_v_g():
+    rng = np.random.default_rng(3)
+    f, g = rng.integers(-5, 6, 4).astype(float), rng.integers(-5, 6, 3).astype(float)
+    f[-1], g[-1] = 1.0, 2.0  # n = 3, m = 2
+    u, v = rng.integers(-5, 6, 2).astype(float), rng.integers(-5, 6, 3).astype(float)  # deg u < m, deg v < n
+    row = np.concatenate([u[::-1], v[::-1]])  # highest power first, as the rows
+    combination = P.polyadd(P.polymul(u, f), P.polymul(v, g))
+    np.testing.assert_allclose(row @ al.sylvester_matrix(f, g), np.pad(combination, (0, 5 - len(combination)))[::-1])
+    # a common factor gives a null vector: u = g / h, v = -f / h
+    h = np.array([-4.0, 1.0])
+    f2, g2 = P.polymul(h, [1.0, 2.0, 1.0]), P.polymul(h, [3.0, 1.0])
+    null = np.concatenate([[1.0, 3.0], [-1.0, -2.0, -1.0]])  # u = t + 3, v = -(t² + 2t + 1), highest first
+    np.testing.assert_allclose(null @ al.sylvester_matrix(f2, g2), 0, atol=1e-12)
 
 
 @pytest.mark.parametrize("name", ["root_product", "root_product_common", "cubic_no_root", "cubic_common",
@@ -565,9 +609,116 @@ def test_term_orders_of_the_notes_example():
     assert al.sort_terms([(2, 0, 2), (1, 2, 1)], "grevlex") == [(1, 2, 1), (2, 0, 2)]
 
 
-@pytest.mark.parametrize("name", ["groebner_linear", "groebner_univariate"])
+@pytest.mark.parametrize("name", ["groebner_linear", "groebner_univariate", "groebner_two_variables"])
 def test_the_groebner_examples(name):
     e = ex(name)
     gens = sp.symbols(e.inputs["variables"])
     basis = sp.groebner([sp.sympify(g) for g in e.inputs["generators"]], *gens, order="lex")
     assert [sp.expand(b) for b in basis.exprs] == [sp.expand(sp.sympify(b)) for b in e.results["basis"]]
+
+
+# --- the plain forms the chapter shows agree with the tuned ones ------------------------------------------------
+
+
+def test_the_plain_resultant_and_bezout_matrix_agree_with_the_tuned_ones():
+    rng = np.random.default_rng(1700)
+    for _ in range(40):
+        n, m = rng.integers(0, 8, 2)
+        f, g = rng.integers(-9, 10, n + 1).astype(float), rng.integers(-9, 10, m + 1).astype(float)
+        f[-1], g[-1] = f[-1] or 1.0, g[-1] or 2.0
+        assert al.resultant_plain(f, g) == pytest.approx(al.resultant(f, g), rel=1e-9, abs=1e-6)
+        np.testing.assert_array_equal(al.bezout_matrix_plain(f, g), al.bezout_matrix(f, g))
+    assert al.resultant_plain([3.0], [5.0]) == 1.0
+    assert al.bezout_matrix_plain([3.0], [5.0]).shape == (0, 0)
+    for name in ("cubic_no_root", "cubic_common", "gauss_two_roots", "root_product"):
+        e = ex(name)
+        np.testing.assert_array_equal(al.bezout_matrix_plain(*e.args("f", "g")), e.results["bezout"])
+    with pytest.raises(ValueError, match="^f: the zero polynomial"):
+        al.resultant_plain([0.0], [1.0, 1.0])
+
+
+def test_the_plain_gcd_agrees_with_poly_gcd():
+    rng = np.random.default_rng(1704)
+    for name in ("euclid_no_root", "euclid_common", "euclid_two_roots"):
+        e = ex(name)
+        np.testing.assert_allclose(al.poly_gcd_plain(*e.args("f", "g")), e.results["gcd"])
+    for _ in range(30):
+        shared = rng.integers(-8, 9, int(rng.integers(0, 3))) / 4
+        f = P.polyfromroots(np.concatenate([shared, rng.integers(-8, 9, int(rng.integers(1, 4))) / 8]))
+        g = P.polyfromroots(np.concatenate([shared, rng.integers(-8, 9, int(rng.integers(1, 4))) / 8 + 0.0625]))
+        f, g = f * rng.uniform(0.5, 3), g * rng.uniform(0.5, 3)
+        np.testing.assert_allclose(al.poly_gcd_plain(f, g), al.poly_gcd(f, g), atol=1e-8)
+    np.testing.assert_allclose(al.poly_gcd_plain([2.0, 4.0], [0.0]), [0.5, 1.0])
+    noisy_f, noisy_g = P.polyfromroots([0.1, 0.3, 2]), P.polyfromroots([0.1, 0.3, -3])
+    np.testing.assert_allclose(al.poly_gcd_plain(noisy_f, noisy_g), [0.03, -0.4, 1.0])
+    with pytest.raises(ValueError, match="both are the zero polynomial"):
+        al.poly_gcd_plain([0.0], [0.0, 0.0])
+
+
+def test_fraction_free_elimination_leaves_its_input_alone_and_checks_it():
+    m = np.array([[7.0, -7.0, 2.0], [-7.0, -5.0, -11.0], [2.0, -11.0, 13.0]])
+    copy = m.copy()
+    al.fraction_free_eliminate(m)
+    np.testing.assert_array_equal(m, copy)
+    with pytest.raises(ValueError, match="^matrix: expected a 2-D array"):
+        al.fraction_free_eliminate([1.0, 2.0])
+    with pytest.raises(ValueError, match="^tol"):
+        al.fraction_free_eliminate(m, tol=2.0)
+
+
+@pytest.mark.parametrize("n", [1, 2, 3, 4, 5])
+def test_the_plain_implicitization_agrees_with_implicitize(n):
+    rng = np.random.default_rng(1706 + n)
+    for _ in range(4):
+        points, weights = random_curve(rng, n, rational=bool(rng.integers(2)))
+        ours, tuned = al.implicitize_plain(points, weights), al.implicitize(points, weights)
+        np.testing.assert_allclose(ours, tuned, rtol=1e-9, atol=1e-9 * np.abs(tuned).max())
+    e = ex("resultant_cubic")
+    np.testing.assert_array_equal(al.implicitize_plain(*e.args("points", "weights")), e.results["implicit"])
+    np.testing.assert_array_equal(al.implicitize_plain(ex("bezier_cubic").inputs["points"]),
+                                  ex("bezier_cubic").results["implicit"])
+
+
+@pytest.mark.parametrize("n", [2, 3, 4, 5])
+def test_the_plain_inversion_returns_the_parameter(n):
+    rng = np.random.default_rng(1707 + n)
+    for _ in range(6):
+        points, weights = random_curve(rng, n, rational=bool(rng.integers(2)))
+        num, den = al.inversion_plain(points, weights)
+        k = max(1, n - 2)
+        assert num.shape == den.shape == (k + 1, k + 1)
+        ts = np.linspace(-0.5, 1.5, 21)
+        pts = bezier.evaluate(points, ts, weights)
+        bottom = al.implicit_eval(den, pts)
+        good = np.abs(bottom) > 1e-3 * np.abs(bottom).max()  # one member of a family may vanish somewhere (n >= 4)
+        np.testing.assert_allclose(al.implicit_eval(num, pts[good]) / bottom[good], ts[good], atol=1e-7)
+        if n <= 3:
+            np.testing.assert_allclose(al.invert_plain(points, pts, weights), al.invert(points, pts, weights),
+                                       atol=1e-8)
+    if n == 3:  # a cubic's formula is unique up to scale: the notes' (17.20) for Example 2
+        e = ex("resultant_cubic")
+        num, den = al.inversion_plain(*e.args("points", "weights"))
+        np.testing.assert_allclose(num / den[1, 0] * 156, e.results["inversion_num"], atol=1e-8)
+
+
+def test_the_plain_inversion_refuses_lines_and_double_points():
+    with pytest.raises(ValueError, match="^points: a line"):
+        al.inversion_plain([(0.0, 0.0), (1.0, 1.0)])
+    e = ex("bezier_cubic")
+    with pytest.raises(ValueError, match="^xy: num = den = 0"):
+        al.invert_plain(e.inputs["points"], [e.results["double_point"]])
+
+
+def test_the_plain_intersection_agrees_with_intersect_implicit():
+    e = ex("intersection")
+    p, q, pw, qw = e.args("p", "q", "p_weights", "q_weights")
+    np.testing.assert_allclose(al.intersect_implicit_plain(p, q, pw, qw), al.intersect_implicit(p, q, pw, qw),
+                               atol=1e-9)
+    rng = np.random.default_rng(1708)
+    for _ in range(10):
+        p, pw = random_curve(rng, int(rng.integers(1, 4)), rational=bool(rng.integers(2)))
+        q, qw = random_curve(rng, int(rng.integers(1, 4)), rational=bool(rng.integers(2)))
+        ours, tuned = al.intersect_implicit_plain(p, q, pw, qw), al.intersect_implicit(p, q, pw, qw)
+        assert ours.shape == tuned.shape
+        np.testing.assert_allclose(ours, tuned, atol=1e-8)
+    assert al.intersect_implicit_plain([(0.0, 0.0), (1.0, 0.0)], [(0.0, 1.0), (1.0, 2.0)]).shape == (0, 2)

@@ -83,3 +83,16 @@ def test_the_figures_draw_into_the_axes_given():
         figures.plot_sign_regions(None, LOOP.results["implicit"], (-1, 6), (-2, 5))
     with pytest.raises(ValueError, match="^coeffs"):
         figures.plot_sign_regions(ax, [1.0, 2.0], (-1, 6), (-2, 5))
+
+
+def test_the_close_up_of_the_intersection_polynomial_shows_the_two_close_roots():
+    zoom = Figure().add_subplot()
+    table = TABLE.results
+    assert figures.plot_polynomial_window(zoom, table["bernstein"], (0.905, 0.955), table["t2_exact"]) is zoom
+    assert zoom.get_xlim() == (0.905, 0.955) and len(zoom.lines[-1].get_xdata()) == 2  # the two close roots
+
+
+def test_the_common_root_readout_names_both_conventions():
+    explorer = widgets.common_root_explorer(g_roots=(-2.0, 0.5, -1.0))
+    text = explorer.readout.value
+    assert "Bézout's convention" in text and "Sylvester" in text
