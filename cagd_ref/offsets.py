@@ -788,9 +788,12 @@ def tiller_hanson(points, rho) -> np.ndarray:
     points: (n+1, 2) of a polynomial curve. Each leg P_i P_(i+1) moves by ρ n_i
     (n_i its unit right normal); the new control points are the first and last
     moved end points and, between them, the meeting points of consecutive moved
-    legs, R_i = P_i + ρ (n_(i-1) + n_i) / (1 + n_(i-1) · n_i). Exact for a line;
-    the end points and end tangents of the offset are always right. A
-    ValueError for a leg of length zero or a polygon that turns back on itself.
+    legs, R_i = P_i + ρ (n_(i-1) + n_i) / (1 + n_(i-1) · n_i). Exact for a line,
+    and for a circular arc in rational form evaluated with its own weights (its
+    legs are tangents of the circle, so the moved polygon is the arc's scaled
+    about the centre); the end points and end tangents of the offset are always
+    right. A ValueError for a leg of length zero or a polygon that turns back
+    on itself.
 
     >>> from cagd_ref.offsets import tiller_hanson
     >>> tiller_hanson([(0, 0), (1, 0), (1, 1)], 0.5).tolist()     # turning left, offset on the right: outside

@@ -42,6 +42,7 @@ CURVES = {
 }
 YOUR_CURVE = "your curve"
 SAMPLES = 400
+KEYED_PANEL = [0.03, 0.40, 0.62, 0.52]  # the upper drawing of a two-panel explorer, leaving the right for its key
 RADIUS = {"min": -3.0, "max": 3.0, "step": 0.05, "readout_format": ".2f"}
 
 
@@ -51,6 +52,28 @@ def _curve_choice(points, default: str) -> tuple[dict, widgets.Dropdown]:
         return dict(CURVES), widgets.Dropdown(description="curve", options=list(CURVES), value=default)
     curves = {YOUR_CURVE: _control_points(points, CURVES[default]), **CURVES}
     return curves, widgets.Dropdown(description="curve", options=list(curves), value=YOUR_CURVE)
+
+
+def _key_beside(ax, position) -> None:
+    """Move the drawing to `position` (figure fractions) and put its legend to its right, where no curve, offset or
+    circle can run under it whatever the sliders say."""
+    ax.set_position(position)
+    ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0)
+
+
+def _label_away_from_offset(ax, points, rho: float) -> None:
+    """Label the control points P_0..P_n on the side of the polygon away from the offset at ρ (which lies on the right
+    for ρ > 0): at each point, against ρ times the mean of the right normals of the legs that meet there."""
+    legs = np.diff(points, axis=0)
+    lengths = np.linalg.norm(legs, axis=1)
+    normals = np.column_stack([legs[:, 1], -legs[:, 0]]) / np.where(lengths > 0, lengths, 1.0)[:, None]
+    at_points = np.vstack([normals[:1], normals[:-1] + normals[1:], normals[-1:]])
+    side = -1.0 if rho >= 0 else 1.0
+    for i, (point, normal) in enumerate(zip(points, at_points)):
+        size = np.linalg.norm(normal)
+        away = side * (normal / size if size > 1e-12 else np.array([0.0, 1.0]))
+        ax.annotate(f"$P_{{{i}}}$", point, xytext=tuple(11 * away), textcoords="offset points", ha="center",
+                    va="center", fontsize=10)
 
 
 def _radius(value) -> str:
@@ -101,12 +124,12 @@ class OffsetExplorer(TwoPanels, Explorer):
             ax.plot([], [], ":", color="C2", label="tightest bend on this side")
         count = len(state["cusps"])
         ax.set_title(f"offset at ρ = {rho:.2f}: {count} cusp{'s' if count != 1 else ''}", fontsize=10)
-        ax.legend(fontsize=8, loc="upper right")
-        bare_axes(ax)
         lower = self.lower_axes()
+        _key_beside(ax, KEYED_PANEL)
+        bare_axes(ax)
         draw_cusp_condition(lower, state["ts"], state["factor"], state["cusps"])
         lower.set_xticks([0, 0.5, 1])
-        lower.legend(fontsize=8, loc="upper center")
+        lower.set_ylabel("1 + ρκ(t)", fontsize=8, labelpad=1)  # a label, not a legend that a peak could run under
 
     def describe(self, state: dict) -> str:
         low, high = state["interval"]
@@ -176,17 +199,19 @@ class PHOffsetExplorer(TwoPanels, Explorer):
 
     def draw(self, ax, state: dict) -> None:
         cubic, points, weights = state["cubic"], state["points"], state["weights"]
-        plot_control_polygon(ax, cubic, labels=True)
+        plot_control_polygon(ax, cubic, labels=False)
+        _label_away_from_offset(ax, cubic, state["rho"])
         plot_bezier(ax, cubic, color="black", linewidth=2.2, label="PH cubic Q")
         plot_control_polygon(ax, points, labels=[f"{w:.3g}" for w in weights], color="C3", alpha=0.6,
                              marker="s", markersize=4, legend="offset's control points (weights)")
         ax.plot(*state["exact"].T, color="C3", linewidth=2, label="exact rational offset (degree 5)")
         ax.plot(*state["sampled"][::8].T, "o", color="C0", markersize=3.5, label="Q + ρN, sampled")
-        ax.set_title(f"ρ = {state['rho']:.2f}: rational quintic vs Q + ρN, largest gap {state['deviation']:.1e}",
+        ax.set_title(f"ρ = {state['rho']:.2f}: exact quintic vs Q + ρN, gap {state['deviation']:.1e}",
                      fontsize=10)
-        ax.legend(fontsize=8, loc="upper left")
-        bare_axes(ax)
+        ax.margins(0.1)  # room for the labels of the points at the edges
         lower = self.lower_axes()
+        _key_beside(ax, KEYED_PANEL)
+        bare_axes(ax)
         lower.plot(state["ts"], bernstein_horner(state["sigma"], state["ts"]), color="C2", label="σ(t) = u² + v²")
         lower.plot(state["ts"][::10], state["speed"][::10], "o", color="black", markersize=3, label="|Q'(t)|")
         lower.set_xlim(0, 1)
@@ -215,6 +240,13 @@ def ph_offset_explorer(u=(2.0, 1.0), v=(0.0, 1.0), rho: float = 0.25) -> PHOffse
 
 
 # ---------------------------------------------------------------- gouging
+
+
+def _stretches(ts: np.ndarray, mask: np.ndarray) -> np.ndarray:
+    """The runs of consecutive samples where `mask` holds, as (k, 2) first and last parameters."""
+    edges = np.diff(np.concatenate([[0], mask.astype(int), [0]]))
+    starts, stops = np.flatnonzero(edges == 1), np.flatnonzero(edges == -1) - 1
+    return np.column_stack([ts[starts], ts[stops]]) if starts.size else np.zeros((0, 2))
 
 
 def _gouge_depths(curve: np.ndarray, path: np.ndarray, radius: float) -> np.ndarray:
@@ -253,7 +285,17 @@ class GougingExplorer(Explorer):
         reverse[1:][np.sign(factor[1:]) != np.sign(factor[:-1])] = np.nan
         cusps = offsets.offset_cusps(points, rho)
         tool = offsets.offset_point(points, t, rho)
-        kind = "none" if not gouged.any() else ("local" if cusps.size else "global")
+        cut = float(max(abs(rho) - np.linalg.norm(base - tool, axis=1).min(), 0.0))
+        at_t = float(1 + rho * bezier.signed_curvature(points, t))
+        # The chapter's definition, position by position: local where the points of Q next to Q(t) are closer than
+        # |ρ|, which is exactly where 1 + ρκ < 0 (the theorem on q''); global where the tool clears them but still
+        # cuts, so the closer points lie on another part of Q.
+        kind = "local" if at_t < 0 else ("global" if cut > 1e-9 * size else "none")
+        # The same verdict for every sampled position of the path: which kinds occur along it.
+        reach = abs(rho) - np.linalg.norm(path[:, None, :] - base[None, :, :], axis=2).min(axis=1)
+        forward_cuts = (factor > 0) & (reach > 1e-9 * size)
+        gouging = tuple(name for name, found in [("local", np.any(factor < 0)), ("global", np.any(forward_cuts))]
+                        if found)
         # The tool path a CAM system keeps: the stretches of the offset at distance |ρ| from all of the curve.
         trimmed = offsets.trim_offset(points, rho) if rho != 0 else np.array([[0.0, 1.0]])
         kept_paths = [offsets.offset_point(points, np.linspace(a, b, max(int(SAMPLES * (b - a)), 2)), rho)
@@ -272,9 +314,11 @@ class GougingExplorer(Explorer):
             "cusps": cusps,
             "tool": tool,
             "contact": bezier.evaluate(points, t),
-            "cut": float(max(abs(rho) - np.linalg.norm(base - tool, axis=1).min(), 0.0)),
-            "factor": float(1 + rho * bezier.signed_curvature(points, t)),
+            "cut": cut,
+            "factor": at_t,
             "kind": kind,
+            "gouging": gouging,
+            "global_at": _stretches(ts, forward_cuts),
             "trimmed": trimmed,
             "kept_paths": kept_paths,
         }
@@ -295,22 +339,34 @@ class GougingExplorer(Explorer):
             ax.add_patch(Circle(tuple(state["tool"]), abs(rho), fill=False, color="C0", linewidth=1.2, zorder=3))
         ax.plot(*np.array([state["tool"], state["contact"]]).T, "o-", color="C0", markersize=4, linewidth=1,
                 zorder=5)
-        titles = {"none": "no gouging", "local": "gouging: the tool is larger than a bend",
-                  "global": "gouging: the tool reaches another part of the curve"}
-        ax.set_title(f"tool radius {abs(rho):.2f}: {titles[state['kind']]}", fontsize=10)
-        ax.legend(fontsize=8, loc="best")
+        titles = {"none": "no cut here", "local": "local gouging", "global": "global gouging"}
+        ax.set_title(f"tool radius {abs(rho):.2f} at t = {state['t']:.2f}: {titles[state['kind']]}", fontsize=10)
+        if ax is self.ax:
+            _key_beside(ax, [0.02, 0.03, 0.62, 0.86])
+        else:  # drawn into someone else's figure, which keeps its own layout
+            ax.legend(fontsize=8, loc="best")
         ax.autoscale_view()
         bare_axes(ax)
 
     def describe(self, state: dict) -> str:
         lines = [f"deepest gouge {state['depth']:.3g}"]
-        if state["kind"] == "local":
-            lines.append("cusps at t = " + ", ".join(f"{c:.3f}" for c in state["cusps"]) +
-                         ": between them the path runs backwards")
-        elif state["kind"] == "global":
-            lines.append("1 + ρκ > 0 everywhere, yet the tool cuts: the curve comes back within ρ of itself")
-        lines.append(f"at t = {state['t']:.2f}: 1 + ρκ = {state['factor']:.3f}, this position cuts {state['cut']:.3g} "
-                     f"deep; tool centre {_fmt(state['tool'])}")
+        if not state["gouging"]:
+            lines.append("no position of the tool cuts into the curve")
+        if "local" in state["gouging"]:
+            lines.append("local gouging: cusps at t = " + ", ".join(f"{c:.3f}" for c in state["cusps"]) +
+                         "; where the path runs backwards between them, the bend is tighter than the tool")
+        if "global" in state["gouging"]:
+            where = "t in " + ", ".join(f"[{a:.3f}, {b:.3f}]" for a, b in state["global_at"])
+            if "local" in state["gouging"]:
+                lines.append(f"global gouging too, at forward positions ({where}): the tool clears the stretch it "
+                             "follows and reaches another part of the curve")
+            else:
+                lines.append(f"1 + ρκ > 0 everywhere, yet the tool cuts ({where}): global gouging, the curve comes "
+                             "back within ρ of itself")
+        verdict = {"none": "cuts nothing", "local": f"cuts {state['cut']:.3g} deep, local gouging",
+                   "global": f"cuts {state['cut']:.3g} deep, global gouging"}[state["kind"]]
+        lines.append(f"at t = {state['t']:.2f}: 1 + ρκ = {state['factor']:.3f}, this position {verdict}; "
+                     f"tool centre {_fmt(state['tool'])}")
         kept = ", ".join(f"[{a:.3f}, {b:.3f}]" for a, b in state["trimmed"]) or "none"
         lines.append(f"trimmed path keeps t in {kept}")
         return "<br>".join(lines)
@@ -325,9 +381,13 @@ def gouging_explorer(points=None, rho: float = -0.8, t: float = 0.45) -> Gouging
     tool's path, "reverse" (the path offset back by -ρ with its own normal: the
     curve again, except on the backward arc), "gouged" (400,) bool, "depth"
     (deepest gouge), "cusps", "tool" (2,) centre at t, "contact" Q(t), "cut"
-    (how deep the tool at t cuts), "factor" (1 + ρκ(t)), "kind" ("none",
-    "local": the tool exceeds a bend, "global": it reaches a distant part),
-    "trimmed" (k, 2) parameter intervals of the path kept by trimming
+    (how deep the tool at t cuts), "factor" (1 + ρκ(t)), "kind" (the tool at
+    t: "none", "local": 1 + ρκ(t) < 0, the points next to Q(t) are closer
+    than |ρ|, "global": it clears them but cuts another part of the curve),
+    "gouging" (the kinds that occur along the whole path, e.g. ("local",
+    "global") for a swallowtail, whose forward arms cut the opposite wall
+    before they cross), "global_at" (k, 2) the stretches of sampled t
+    where the path gouges globally, "trimmed" (k, 2) parameter intervals of the path kept by trimming
     (`offsets.trim_offset`), "kept_paths" (their points, one array each)}.
     """
     return GougingExplorer(points, rho, t)

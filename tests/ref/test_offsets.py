@@ -502,6 +502,22 @@ def test_tiller_hanson_is_exact_for_a_line_and_at_the_ends_of_any_curve():
         o.tiller_hanson([(0.0, 0.0), (0.0, 0.0), (1.0, 1.0)], 0.5)
 
 
+@pytest.mark.parametrize("rho", [0.5, -1.0, -2.9])
+def test_tiller_hanson_is_exact_for_a_rational_circular_arc_with_its_weights(rho):
+    points, weights = bezier.circular_arc([1.0, 2.0], 3.0, 0.2, 2.5)
+    moved = o.tiller_hanson(points, rho)
+    np.testing.assert_allclose(moved, [1.0, 2.0] + (points - [1.0, 2.0]) * (3.0 + rho) / 3.0, atol=1e-13)
+    np.testing.assert_allclose(bezier.evaluate(moved, TS, weights), o.offset_point(points, TS, rho, weights),
+                               atol=1e-13)
+
+
+def test_tiller_hanson_is_not_exact_for_a_cubic_quarter_circle():
+    k = 4 / 3 * (np.sqrt(2) - 1)
+    quarter = np.array([[1.0, 0.0], [1.0, k], [k, 1.0], [0.0, 1.0]])
+    moved = o.tiller_hanson(quarter, 0.25)
+    assert o.offset_error(quarter, 0.25, bezier.evaluate(moved, TS), TS).max() > 1e-3
+
+
 def test_tiller_hanson_error_falls_fourfold_per_halving():
     arch = np.array(ARCH.inputs["points"], dtype=float)
     s = np.linspace(0, 1, 101)

@@ -124,10 +124,31 @@ def test_the_hook_is_gouged_by_a_tool_that_fits_every_bend():
     low, _ = offsets.cusp_free_interval(points)
     rho = 0.9 * low  # inside the curl, smaller than its tightest bend
     explorer = widgets.gouging_explorer()
-    state = explorer.update(curve="hook", rho=rho, t=0.5)
-    assert state["cusps"].size == 0 and state["kind"] == "global" and state["depth"] > 0.1
+    state = explorer.update(curve="hook", rho=rho, t=0.07)  # near the start of the path: it cuts the free end
+    assert state["cusps"].size == 0 and state["kind"] == "global" and state["cut"] > 0.1 and state["depth"] > 0.1
+    assert state["gouging"] == ("global",) and state["factor"] > 0
     assert np.all(1 + rho * bezier.signed_curvature(points, np.linspace(0, 1, 401)) > 0)
-    assert "yet the tool cuts" in explorer.readout.value
+    assert "yet the tool cuts" in explorer.readout.value and "global gouging" in explorer.readout.value
+    clear = explorer.update(t=0.5)  # a position that cuts nothing, on a path that gouges elsewhere
+    assert clear["kind"] == "none" and clear["cut"] == 0 and clear["gouging"] == ("global",)
+    assert "this position cuts nothing" in explorer.readout.value
+
+
+def test_a_swallowtail_gouges_locally_on_its_backward_arc_and_globally_before_its_crossing():
+    pocket = CURVES["parabola y = x²"]
+    explorer = widgets.gouging_explorer()
+    crossing = offsets.trim_offset(pocket, -0.8)[0, 1]
+    first, second = offsets.offset_cusps(pocket, -0.8)
+    vertex = explorer.update(curve="parabola y = x²", rho=-0.8, t=0.5)
+    assert vertex["kind"] == "local" and vertex["factor"] < 0 and vertex["gouging"] == ("local", "global")
+    arm = explorer.update(t=0.35)  # between the crossing and the first cusp: forward, and still cutting
+    assert crossing < 0.35 < first and arm["kind"] == "global" and arm["factor"] > 0 and arm["cut"] > 0.1
+    assert "global gouging too" in explorer.readout.value
+    # The forward positions that gouge are exactly those between the crossings and the cusps.
+    (a, b), (c, d) = arm["global_at"]
+    assert crossing < a < b < first and second < c < d < 1 - crossing
+    assert b - a > first - crossing - 0.01 and d - c > first - crossing - 0.01
+    assert explorer.update(t=0.1)["kind"] == "none"
 
 
 def test_the_path_offset_back_is_the_curve_except_between_the_cusps():
@@ -139,6 +160,49 @@ def test_the_path_offset_back_is_the_curve_except_between_the_cusps():
     np.testing.assert_allclose(state["reverse"][outside], state["base"][outside], atol=1e-12)
     far = state["base"] + 4.0 * offsets.offset_normal(ARCH.inputs["points"], ts)
     np.testing.assert_allclose(state["reverse"][inside], far[inside], atol=1e-12)
+
+
+# ---------------------------------------------------------------- the layouts
+
+
+def _beside(explorer) -> bool:
+    """True when the drawing's legend stands to the right of it, not on it."""
+    canvas = explorer.figure.canvas
+    canvas.draw()
+    drawing = explorer.ax.get_window_extent()
+    key = explorer.ax.get_legend().get_window_extent()
+    return key.x0 >= drawing.x1 and key.x1 <= explorer.figure.bbox.x1
+
+
+@pytest.mark.parametrize(
+    "make, values",
+    [
+        (widgets.offset_explorer, dict(curve="convex arch", rho=2.0)),
+        (widgets.offset_explorer, dict(curve="hook", rho=1.5)),
+        (widgets.ph_offset_explorer, dict(rho=0.25)),
+        (widgets.ph_offset_explorer, dict(u0=-1.0, u1=1.5, v0=1.0, v1=0.5, rho=0.8)),
+        (widgets.gouging_explorer, dict(curve="parabola y = x²", rho=-0.8, t=0.45)),
+    ],
+)
+def test_the_explorers_keep_their_legend_beside_the_drawing(make, values):
+    explorer = make()
+    explorer.update(**values)
+    assert _beside(explorer)
+
+
+@pytest.mark.parametrize("rho", [0.25, -0.8])
+def test_the_ph_lab_labels_its_control_points_away_from_the_offset(rho):
+    explorer = widgets.ph_offset_explorer()
+    state = explorer.update(rho=rho)
+    cubic = state["cubic"]
+    labels = [text for text in explorer.ax.texts if text.get_text().startswith("$P_")]
+    assert [text.get_text() for text in labels] == [f"$P_{{{i}}}$" for i in range(4)]
+    legs = np.diff(cubic, axis=0)
+    right = np.column_stack([legs[:, 1], -legs[:, 0]])
+    right /= np.linalg.norm(right, axis=1)[:, None]
+    at_points = np.vstack([right[:1], right[:-1] + right[1:], right[-1:]])
+    for text, normal in zip(labels, at_points):
+        assert np.sign(rho) * (np.asarray(text.xyann) @ normal) < 0  # on the far side from the offset
 
 
 # ---------------------------------------------------------------- the figures
