@@ -68,12 +68,26 @@ def plot_pencil_ray(ax, point, t, xlim, ylim, **style) -> Axes:
 
 
 def plot_parametrization(ax, xyw, interval=(-4.0, 4.0), samples: int = 600, **style) -> Axes:
-    """Draw the rational curve (X/W, Y/W) of rows (3, n+1) over `interval`, broken where W changes sign. §19.5."""
+    """Draw the rational curve (X/W, Y/W) of rows (3, n+1) over `interval`, broken where W changes sign. §19.5.
+
+    interval=None draws it for every real t and t = ∞: the rows are evaluated in
+    homogeneous form at (cos θ, sin θ), t = tan θ, for θ over [-π/2, π/2], so no
+    arc of large |t| is left out.
+    """
     check_axes(ax)
     rows = as_float_array(xyw, "xyw")
-    lo, hi = as_interval(interval, "interval")
-    ts = np.linspace(lo, hi, samples)
-    values = np.stack([P.polyval(ts, rows[k]) for k in range(3)], axis=-1)
+    if rows.ndim != 2 or rows.shape[0] != 3:
+        raise ValueError(f"xyw: expected rows X, Y, W of shape (3, n+1), got shape {rows.shape}")
+    if interval is None:
+        theta = np.linspace(-np.pi / 2, np.pi / 2, samples)
+        cos, sin = np.cos(theta), np.sin(theta)
+        n = rows.shape[1] - 1
+        powers = np.stack([sin**k * cos ** (n - k) for k in range(n + 1)], axis=-1)  # t^k cos^n θ
+        values = powers @ rows.T
+    else:
+        lo, hi = as_interval(interval, "interval")
+        ts = np.linspace(lo, hi, samples)
+        values = np.stack([P.polyval(ts, rows[k]) for k in range(3)], axis=-1)
     w = values[:, 2]
     with np.errstate(divide="ignore", invalid="ignore"):
         xy = values[:, :2] / w[:, None]

@@ -1,13 +1,13 @@
 """Explorers of chapter 19 of the notes (plane algebraic curves): a double-point classifier that deforms a cubic
-through crunode, cusp and acnode, the parametrization of a unicursal curve by a pencil of lines through its
-singular point, and a curve's discriminant drawn under its silhouette.
+through crunode, cusp and acnode, the parametrization of a unicursal curve by a pencil of lines through a point of
+multiplicity n - 1, and a curve's discriminant drawn under its silhouette.
 
 The classifier is Figures 19.2-19.4 in one family, x³ + k x² - 3y² = 0: its
 tangent cone k x² - 3y² at the origin has two real lines for k > 0, one double
 line for k = 0 (Figure 19.3 exactly) and two complex ones for k < 0 (k = -3 is
 Figure 19.4). The pencil explorer is Figures 19.6 and 19.7 with a t slider: the
-line of slope t through the singular point and the one more point where it meets
-the curve. The silhouette explorer turns a curve and shows that the real roots of
+line of slope t through the pencil's centre (a point of multiplicity n - 1) and
+the one more point where it meets the curve. The silhouette explorer turns a curve and shows that the real roots of
 Res_y(f, f_y) are where its outline, seen along y, has vertical tangents or
 crosses itself.
 """
@@ -165,7 +165,7 @@ CURVES = {
 
 
 class PencilParametrizationExplorer(Explorer):
-    """The line of slope t through the singular point and the one more point where it meets the curve. §19.5."""
+    """The line of slope t through the pencil's centre and the one more point where it meets the curve. §19.5."""
 
     def __init__(self, curve: str = "circle x² − 2x + y² (Fig. 19.6)", t: float = 0.5):
         controls = {
@@ -189,7 +189,8 @@ class PencilParametrizationExplorer(Explorer):
     def draw(self, ax, state: dict) -> None:
         box = state["box"]
         plot_curve(ax, state["c"], *box, colors="0.75", linewidths=5.0)
-        plot_parametrization(ax, state["xyw"], (-12.0, 12.0), samples=1600, label="(X(t)/W(t), Y(t)/W(t))")
+        # every t, t = ∞ included: a finite range of t would leave a gap in the curve next to the centre
+        plot_parametrization(ax, state["xyw"], None, samples=2400, label="(X(t)/W(t), Y(t)/W(t))")
         plot_pencil_ray(ax, state["point"], state["t"], *box, label=f"y − y0 = {state['t']:.2f}(x − x0)")
         ax.plot(*state["point"], **SINGULAR_STYLE)
         if state["xy"] is not None:
@@ -203,7 +204,8 @@ class PencilParametrizationExplorer(Explorer):
         x, y, w = state["xyw"]
         where = "at infinity" if state["xy"] is None else f"{_fmt(state['xy'])}, f there {state['residual']:.1e}"
         return "<br>".join([
-            f"{_equation(state['c'])}; the lines turn about the singular point (x0, y0) = {_fmt(state['point'])}",
+            f"{_equation(state['c'])}; the lines turn about the pencil's centre (x0, y0) = {_fmt(state['point'])}, "
+            "a point of multiplicity n − 1",
             f"x(t) = {_quotient(x, w)},  y(t) = {_quotient(y, w)}",
             f"t = {state['t']:.2f}: the green point {where}",
             f"the parametrization reaches (x0, y0) itself at {_through(state['xyw'], state['point'])}",
@@ -211,7 +213,7 @@ class PencilParametrizationExplorer(Explorer):
 
 
 def _through(xyw: np.ndarray, point: np.ndarray) -> str:
-    """The t at which the parametrization passes through its singular point: the roots of f̂_(n-1)(1, t)."""
+    """The t at which the parametrization passes through the pencil's centre: the roots of f̂_(n-1)(1, t)."""
     low = point[0] * xyw[2] - xyw[0]  # f̂_(n-1)(1, t), padded
     nonzero = np.flatnonzero(np.abs(low) > 1e-12 * np.abs(xyw).max())
     if nonzero.size == 0 or nonzero[-1] == 0:
@@ -233,9 +235,9 @@ def _through(xyw: np.ndarray, point: np.ndarray) -> str:
 
 def pencil_parametrization_explorer(curve: str = "circle x² − 2x + y² (Fig. 19.6)",
                                     t: float = 0.5) -> PencilParametrizationExplorer:
-    """Slider `t` (the slope of the line through the singular point) and dropdown `curve`. Notes §19.5.
+    """Slider `t` (the slope of the line through the pencil's centre) and dropdown `curve`. Notes §19.5.
 
-    `update` returns {"curve", "c", "point" the singular point, "t", "xyw" (3, n+1)
+    `update` returns {"curve", "c", "point" the pencil's centre (multiplicity n - 1), "t", "xyw" (3, n+1)
     the parametrization, "xy" the curve's point on the line (None at infinity),
     "residual" f(xy) relative to the coefficients, "box"}.
     """
@@ -313,7 +315,7 @@ class SilhouetteExplorer(TwoPanels, Explorer):
             ax.axvline(x, color="C3", linewidth=0.9, linestyle="--")
         if state["double_point"] is not None:
             ax.plot(*state["double_point"], **SINGULAR_STYLE)
-        ax.legend(fontsize=8, loc="upper left")
+        ax.legend(fontsize=8, loc=_quiet_corner(ax, shown))
         ax.set_title("vertical tangents and crossings are roots of Res_y(f, f_y)", fontsize=10)
         bare_axes(ax)
         plot_discriminant(lower, state["discriminant"], xlim, state["roots"], scale="symlog")
@@ -326,10 +328,32 @@ class SilhouetteExplorer(TwoPanels, Explorer):
         roots = ", ".join(f"{x:.4g}" for x in state["roots"]) or "none"
         return "<br>".join([
             f"Res_y(f, ∂f/∂y), a polynomial in x of degree {len(state['discriminant']) - 1}; real roots x = {roots}",
-            "a simple root: a vertical tangent; a double root: a double point (or two vertical tangents over one x)",
+            "a simple root: a vertical tangent; a root of multiplicity 2 or more: a singular point (a double root at "
+            "a crunode without a vertical tangent, a triple one at a cusp) or two vertical tangents over one x",
             "lower panel: Res_y(f, f_y) on a symmetric log scale (linear near 0), where a simple root is a crossing "
             "and a double root a touch",
         ])
+
+
+def _quiet_corner(ax, lines=()) -> str:
+    """The corner of `ax` where the legend covers the least: the fewest curve vertices and dashed lines there.
+
+    The curve is the contour drawn by `plot_curve`; `lines` are the x of the vertical dashed lines. Each corner is
+    scored over a box the size of a one-entry legend (a third of the width, an eighth of the height).
+    """
+    to_axes = ax.transData + ax.transAxes.inverted()
+    points = [to_axes.transform(path.vertices) for artist in ax.collections for path in artist.get_paths()
+              if len(path.vertices)]
+    points = np.concatenate(points) if points else np.zeros((0, 2))
+    xs = to_axes.transform(np.column_stack([lines, np.zeros(len(lines))]))[:, 0] if len(lines) else np.zeros(0)
+    scores = {}
+    for corner, (left, bottom) in {"upper left": (0.0, 0.87), "upper right": (0.67, 0.87),
+                                   "lower left": (0.0, 0.0), "lower right": (0.67, 0.0)}.items():
+        inside = ((points[:, 0] >= left) & (points[:, 0] <= left + 0.33)
+                  & (points[:, 1] >= bottom) & (points[:, 1] <= bottom + 0.13))
+        crossing = (xs >= left) & (xs <= left + 0.33)
+        scores[corner] = int(inside.sum()) + 25 * int(crossing.sum())
+    return min(scores, key=scores.get)  # ties: the first, upper left
 
 
 def silhouette_explorer(curve: str = "cubic of §19.5", angle: float = 0.0,

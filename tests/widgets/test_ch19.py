@@ -155,3 +155,42 @@ def test_a_curve_s_legend_entry_has_its_line_style():
     solid = Figure().add_subplot()
     figures.plot_curve(solid, [[0.0, -1.0], [0.0, 0.0], [1.0, 0.0]], (-2, 2), (-1, 3), label="y = x²")
     assert solid.lines[0].get_linestyle() == "-"
+
+
+def test_the_pencil_explorer_draws_every_t_and_names_the_centre():
+    explorer = widgets.pencil_parametrization_explorer()  # the circle: (0, 0) is a simple point, reached at t = ∞
+    (curve,) = [line for line in explorer.ax.lines if line.get_label() == "(X(t)/W(t), Y(t)/W(t))"]
+    xy = np.column_stack([curve.get_xdata(), curve.get_ydata()])
+    xy = xy[np.isfinite(xy).all(axis=1)]
+    assert np.linalg.norm(xy, axis=1).min() < 1e-6  # no gap next to the centre
+    assert np.linalg.norm(np.diff(xy, axis=0), axis=1).max() < 0.05
+    assert "the pencil's centre (x0, y0) = (0, 0), a point of multiplicity n − 1" in explorer.readout.value
+    assert "singular point" not in explorer.readout.value
+
+
+def test_plot_parametrization_over_the_whole_line_matches_the_finite_range():
+    rows = notes_example("19.circle_pencil").results["pencil"]
+    whole, part = Figure().add_subplot(), Figure().add_subplot()
+    figures.plot_parametrization(whole, rows, None, samples=2001)
+    figures.plot_parametrization(part, rows, (-3, 3))
+    drawn = np.column_stack([whole.lines[0].get_xdata(), whole.lines[0].get_ydata()])
+    assert np.allclose((drawn[:, 0] - 1) ** 2 + drawn[:, 1] ** 2, 1)  # every sample on the circle
+    assert np.allclose(drawn[0], [0, 0]) and np.allclose(drawn[1000], [2, 0])  # t = ∞ and t = 0
+    assert np.allclose((part.lines[0].get_xdata()[0], part.lines[0].get_ydata()[0]), [0.2, -0.6])
+    with pytest.raises(ValueError, match="^xyw"):
+        figures.plot_parametrization(whole, [[1.0, 0.0], [0.0, 1.0]], None)
+
+
+@pytest.mark.parametrize("curve", list(SILHOUETTES))
+@pytest.mark.parametrize("angle", [-60.0, 0.0, 30.0, 90.0])
+def test_the_silhouette_legend_sits_where_the_curve_is_not(curve, angle):
+    explorer = widgets.silhouette_explorer(curve, angle=angle)
+    ax = explorer.ax
+    explorer.figure.canvas.draw()
+    box = ax.get_legend().get_window_extent().transformed(ax.transAxes.inverted())
+    to_axes = ax.transData + ax.transAxes.inverted()
+    vertices = np.concatenate([to_axes.transform(p.vertices) for a in ax.collections for p in a.get_paths()
+                               if len(p.vertices)])
+    covered = ((vertices[:, 0] > box.x0) & (vertices[:, 0] < box.x1)
+               & (vertices[:, 1] > box.y0) & (vertices[:, 1] < box.y1))
+    assert covered.mean() < 0.01
