@@ -704,8 +704,9 @@ def newton_in_bracket(coeffs, bracket, end_values, tol: float, max_steps: int = 
     secant's root. A Newton step that would leave the bracket, or that is not
     shorter than half the step before last, is replaced by bisection. The root
     is done when a step is shorter than tol, the bracket narrower than tol, or
-    |f| below the rounding error of its own evaluation, η Σ |y_i| B_i^n(x)
-    (further steps would follow rounding noise). `max_steps` is a safeguard
+    |f| below the rounding error of its own evaluation, 2η Σ |y_i| B_i^n(x)
+    (eps, the spacing of doubles at 1, times the rounding scale: further steps
+    would follow rounding noise). `max_steps` is a safeguard
     (NEWTON_STEPS, as in `bernstein_roots`).
     """
     y = np.asarray(coeffs, dtype=float)

@@ -119,8 +119,13 @@ def plot_derivative_look(ax, step, coeffs=None, interval=(0, 1)) -> Axes:
     mark_roots(ax, step.roots, label=None)
     name = derivative_name(step.order)
     a, b = step.interval
-    action = f"split at the roots of {derivative_name(step.order + 1)}" if step.action.startswith("split") else (
-        step.action)
+    following = derivative_name(step.order + 1)
+    if step.action.startswith("split"):
+        action = f"split at the roots of {following}"
+    elif step.action == "monotone piece":  # monotone because the roots of the derivative cut it off
+        action = f"cut at the roots of {following}: monotone"
+    else:
+        action = step.action
     found = ""
     if len(step.roots) == 1:
         found = f", at {step.roots[0]:.4g}" if step.action == "one root" else f", root {step.roots[0]:.4g}"

@@ -61,6 +61,7 @@ MARCH_SHOWN = 100  # steps the slider reaches; the march is cut there (a double 
 DEGREES = (2, 25)
 BERNSTEIN, POWER = "bernstein_roots (Bernstein form)", "numpy.roots (power form)"
 ETA = 2.0**-53  # the unit round-off of doubles
+CELL = " style='padding:1px 10px;text-align:right'"  # readout table cells, kept apart
 
 
 # ---------------------------------------------------------------- convex hull marching
@@ -127,10 +128,12 @@ class HullMarchExplorer(Explorer):
     def describe(self, state: dict) -> str:
         k, steps = state["step"], state["steps"]
         rows = "".join(
-            f"<tr><td>{j}</td><td>{s.start:.12f}</td><td>{s.coeffs[0]:.3e}</td><td>{s.event}</td></tr>"
+            f"<tr><td{CELL}>{j}</td><td{CELL}>{s.start:.12f}</td><td{CELL}>{s.coeffs[0]:.3e}</td>"
+            f"<td{CELL}>{s.event}</td></tr>"
             for j, s in list(enumerate(steps[: k + 1]))[-6:]
         )
-        table = f"<table><tr><th>k</th><th>t_k</th><th>f(t_k)</th><th></th></tr>{rows}</table>"
+        head = "".join(f"<th{CELL}>{name}</th>" for name in ("k", "t_k", "f(t_k)", "event"))
+        table = f"<table style='border-collapse:collapse'><tr>{head}</tr>{rows}</table>"
         found = ", ".join(f"{t:.12g}" for t in state["roots"]) or "none yet"
         ratio = f"<br>step ratio {state['ratio']:.3f}" if state["ratio"] is not None else ""
         truth = ", ".join(f"{t:.12g}" for t in bernstein_roots(state["coeffs"])) or "none"
@@ -254,8 +257,10 @@ class LineCurveExplorer(TwoPanels, Explorer):
         self.middle = len(self.points) // 2
         span = float(np.linalg.norm(np.ptp(self.points, axis=0)))
         controls = {
-            # The default is the notes' Lmin = (6, -8, 40), normalised: x cos θ + y sin θ = 4 at θ = 126.87°.
-            "angle": _slider(widgets.FloatSlider, "angle °", min=0.0, max=180.0, step=0.01, value=126.87),
+            # The default is the notes' Lmin = (6, -8, 40), normalised: x cos θ + y sin θ = 4 at θ = 126.87°
+            # (exactly, so that the readout gives the chapter's parameter).
+            "angle": _slider(widgets.FloatSlider, "angle °", min=0.0, max=180.0, step=0.01,
+                             value=float(np.degrees(np.arctan2(0.8, -0.6)))),
             "offset": _slider(widgets.FloatSlider, "offset", min=-span, max=span, step=0.05, value=4.0),
             "weight": _slider(widgets.FloatLogSlider, f"w{self.middle}", base=10, min=-1.0, max=1.0, step=0.02,
                               value=float(self.weights[self.middle])),

@@ -15,7 +15,7 @@ from scipy.interpolate import BPoly, PPoly
 
 from cagd_course.examples import notes_example
 from cagd_ref import roots
-from cagd_ref.bezier import evaluate, explicit_bezier
+from cagd_ref.bezier import evaluate, explicit_bezier, subdivide
 from cagd_ref.polynomials import bernstein_horner, bernstein_multiply, bernstein_to_power, power_to_bernstein
 from cagd_ref.roots import (
     bcom_roots,
@@ -217,13 +217,63 @@ def test_march_steps_never_pass_a_root_and_restrict_the_polynomial():
 def test_the_corrected_pitfall_rule_takes_the_far_end_of_the_step():
     example = notes_example("09.pitfall")
     (coeffs,) = example.args("coeffs")
-    # The first step lands on the root and rounding gives f there the other sign ...
+    # The first step lands on the root 7/12, and de Casteljau gives f there the other sign: with the course's
+    # subdivide, (1 - c) a + c b, and with the march's own kernel, a + c (b - a) ...
     (step,) = [s for s in hull_march_steps(coeffs) if s.event == "root"]
-    assert step.start == 0.0 and step.crossing == pytest.approx(example.results["root"], abs=1e-15)
-    assert coeffs[0] + step.crossing * (coeffs[1] - coeffs[0]) > 0 > coeffs[0]  # de Casteljau's value there
-    # ... so the notes' rule would take t0 = 0; the root is t1.
-    assert example.errata["root"].notes == 0
-    np.testing.assert_allclose(hull_march(coeffs), [example.errata["root"].correct], atol=1e-15)
+    assert step.start == 0.0 and step.crossing == example.results["root"] == pytest.approx(7 / 12, abs=1e-16)
+    assert subdivide(coeffs[:, None], step.crossing)[1][0, 0] > 0 > coeffs[0]
+    assert coeffs[0] + step.crossing * (coeffs[1] - coeffs[0]) > 0
+    # ... so the notes' rule ("take t_i") would return t0 = 0; the root is t1, and both marches say so.
+    assert not example.errata  # the notes state a rule, not a value
+    for march in (hull_march, hull_march_plain):
+        np.testing.assert_allclose(march(coeffs), [example.results["root"]], atol=1e-15)
+
+
+def _tangent_test(coeffs, r):
+    """The chapter's test at a simple root r: (Newton steps from some step on, predicted linear factor)."""
+    n = len(coeffs) - 1
+    bar = subdivide(np.asarray(coeffs, dtype=float)[:, None], r)[1][:, 0]  # f on [r, 1]
+    heights = bar[2:] - np.arange(2, n + 1) * bar[1]  # above the tangent at r
+    slopes = bar[1:] / np.arange(1, n + 1)
+    steepest = slopes.min() if bar[1] < 0 else slopes.max()
+    return bool(np.all(bar[1] * heights < 0)), 1 - bar[1] / steepest
+
+
+@pytest.mark.parametrize(
+    "coeffs, newton",
+    [
+        (bernstein_from_roots([0.3, 1.5], leading=-1.0), True),  # a quadratic with f'f'' < 0
+        ([1.0, 1.0, -3.0, -2.0, 4.0], True),  # the quartic's first root
+        ([1.0, -1.0, 2.0, -3.0], False),  # f'f'' > 0: Newton from the left would overshoot
+        ([0.65, -0.36, -0.24, 0.72, 0.45, -7.08], False),  # f'f'' < 0, yet a far point beyond the tangent
+        ([10.0, -4.0, 2.0, -4.0], False),  # the chapter's question: rho = 1/4
+        ([-0.39, 0.48, -0.24, 0.96], False),
+    ],
+)
+def test_the_march_is_newton_exactly_when_the_tangent_at_the_root_supports_the_polygon(coeffs, newton):
+    coeffs = np.asarray(coeffs, dtype=float)
+    r = bernstein_roots(coeffs)[0]
+    predicted, rho = _tangent_test(coeffs, r)
+    assert predicted == newton
+    d = np.abs(r - np.array([s.start for s in hull_march_steps(coeffs) if s.start < r]))
+    d = d[d > 1e-9]
+    if newton:
+        assert d[-1] / d[-2] < 0.01 and d[-1] / d[-2] ** 2 < 10  # quadratic
+    else:
+        assert d[-1] / d[-2] == pytest.approx(rho, abs=2e-3)  # linear, with the predicted factor
+
+
+def test_the_step_follows_the_steepest_edge_from_the_first_point_once_the_first_leg_crosses():
+    rng = np.random.default_rng(9)
+    for _ in range(200):
+        y = rng.normal(size=int(rng.integers(2, 8)))
+        if y[0] * y[1] >= 0:
+            continue
+        n = len(y) - 1
+        slopes = (y[1:] - y[0]) / np.arange(1, n + 1)
+        m = 1 + (int(np.argmin(slopes)) if y[0] > 0 else int(np.argmax(slopes)))
+        assert hull_crossing(y)[0] == pytest.approx((0 - y[0] * m / (y[m] - y[0])) / n, abs=1e-14)
+    assert hull_crossing([1.0, 0.1, -0.7])[0] == 0.5625  # the first leg does not cross: the edge P1 P2
 
 
 @pytest.mark.parametrize(

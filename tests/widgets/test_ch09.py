@@ -54,7 +54,14 @@ def test_the_step_ratio_shows_linear_convergence_and_the_crawl():
 
 def test_the_pitfall_preset_finds_its_root_in_one_step():
     state = widgets.hull_march_explorer().update(polynomial="the pitfall: a linear f", step=0)
-    assert state["event"] == "root" and state["crossing"] == pytest.approx(1.99 / 2.99, abs=1e-15)
+    assert state["event"] == "root" and state["crossing"] == pytest.approx(7 / 12, abs=1e-15)
+
+
+def test_the_march_readout_keeps_its_columns_apart():
+    explorer = widgets.hull_march_explorer()
+    text = explorer.describe(explorer.update(polynomial="Figure 9.1 (course quartic)", step=3))
+    assert text.count("padding") >= 4 * 5  # header and rows: every cell padded
+    assert "<th style='padding:1px 10px;text-align:right'>event</th>" in text
 
 
 def test_stepping_to_the_control_polygon_jumps_the_root_of_the_cubic():
@@ -161,6 +168,9 @@ def test_march_and_derivative_panels_are_labelled():
     look = bcom_steps(coeffs)[0]
     title = plot_derivative_look(_axes(), look, coeffs).get_title()
     assert f"V = {look.variations}" in title and "split at the roots of f′" in title
+    monotone = next(s for s in bcom_steps(coeffs) if s.action == "monotone piece")
+    title = plot_derivative_look(_axes(), monotone, coeffs).get_title()
+    assert "cut at the roots of" in title and "monotone piece" not in title  # the cut, not V, makes it monotone
     assert len(mark_roots(_axes(), [0.2, 0.4]).lines) == 1
 
 
