@@ -5,7 +5,8 @@ ipympl both can be dragged: the points in the upper panel, the nodes in the
 Lagrange basis below); the Runge explorer compares uniform and Chebyshev
 nodes on a function; the Neville stepper builds the triangle level by level
 next to Newton's table; the flattening explorer counts chords for a
-tolerance; the Hermite explorer turns end tangents into Bézier points.
+tolerance; the Hermite explorer turns end tangents, set by their
+components, into Bézier points.
 """
 
 from __future__ import annotations
@@ -74,6 +75,7 @@ SAMPLES = 201
 PARAMETER_MODES = ["sliders", "uniform", "chord length", "centripetal", "Chebyshev"]
 NODE_PICK = 0.04  # how close (in t) a click must be to grab a node
 GAP_SAMPLES = 2000  # parameters for the flattening explorer's gap profile, shared among the chords
+TANGENT_RANGE = 12.0  # the Hermite explorer's tangent components run over [-12, 12]
 
 
 def _table(rows: list[list[str]], header: list[str]) -> str:
@@ -392,6 +394,9 @@ class NevilleExplorer(Explorer):
 
     def draw(self, ax, state: dict) -> None:
         plot_neville(ax, self.ts, self.points, state["tau"], level=state["level"])
+        # Room below the lowest and above the highest point: their 't = ...' labels stay off the frame and ticks.
+        low, high = ax.get_ylim()
+        ax.set_ylim(low - 0.12 * (high - low), high + 0.08 * (high - low))
         ax.set_title(f"Neville's scheme at τ = {state['tau']:.2f}: levels 1..{state['level']}", fontsize=10)
 
     def describe(self, state: dict) -> str:
@@ -492,23 +497,28 @@ def flattening_explorer(points=None) -> FlatteningExplorer:
 
 
 class HermiteExplorer(Explorer):
-    """End tangents by angle and length -> the cubic Hermite curve and its Bézier polygon. Notes §10.7."""
+    """End tangents by their components -> the cubic Hermite curve and its Bézier polygon. Notes §10.7.
+
+    Components rather than angle and length: the course's example P'(0) = (3, 9),
+    P'(1) = (3, -9) then sits exactly on the sliders (its angle, 71.565...°, and
+    length, √90, do not), and so do its Bézier points (1, 3), (3, 3).
+    """
 
     figsize = (6.0, 4.6)
+    static_control = "d0y"  # the static figure tilts the start tangent up and down
 
-    def __init__(self, p0=(0.0, 0.0), p1=(4.0, 0.0)):
+    def __init__(self, p0=(0.0, 0.0), p1=(4.0, 0.0), d0=(3.0, 9.0), d1=(3.0, -9.0)):
         self.p0, self.p1 = as_vector(p0, "p0", dim=2), as_vector(p1, "p1", dim=2)
-        controls = {
-            "angle0": _slider(widgets.FloatSlider, "angle P'(0)", min=-180.0, max=180.0, step=1.0, value=71.57),
-            "length0": _slider(widgets.FloatSlider, "|P'(0)|", min=0.0, max=15.0, step=0.1, value=9.49),
-            "angle1": _slider(widgets.FloatSlider, "angle P'(1)", min=-180.0, max=180.0, step=1.0, value=-71.57),
-            "length1": _slider(widgets.FloatSlider, "|P'(1)|", min=0.0, max=15.0, step=0.1, value=9.49),
-        }
+        start, end = as_vector(d0, "d0", dim=2), as_vector(d1, "d1", dim=2)
+        controls = {}
+        for name, label, value in (("d0x", "P'(0) x", start[0]), ("d0y", "P'(0) y", start[1]),
+                                   ("d1x", "P'(1) x", end[0]), ("d1y", "P'(1) y", end[1])):
+            controls[name] = _slider(widgets.FloatSlider, label, min=-TANGENT_RANGE, max=TANGENT_RANGE, step=0.5,
+                                     value=float(np.clip(value, -TANGENT_RANGE, TANGENT_RANGE)))
         super().__init__(controls)
 
-    def compute(self, angle0: float, length0: float, angle1: float, length1: float) -> dict:
-        d0 = length0 * np.array([np.cos(np.radians(angle0)), np.sin(np.radians(angle0))])
-        d1 = length1 * np.array([np.cos(np.radians(angle1)), np.sin(np.radians(angle1))])
+    def compute(self, d0x: float, d0y: float, d1x: float, d1y: float) -> dict:
+        d0, d1 = np.array([d0x, d0y], dtype=float), np.array([d1x, d1y], dtype=float)
         return {
             "d0": d0,
             "d1": d1,
@@ -525,11 +535,11 @@ class HermiteExplorer(Explorer):
                 "Bézier points: " + " ".join(_fmt(p) for p in state["bezier"]))
 
 
-def hermite_explorer(p0=(0.0, 0.0), p1=(4.0, 0.0)) -> HermiteExplorer:
-    """Sliders for the angle (degrees) and length of P'(0) and P'(1): the cubic Hermite curve. Notes §10.7.
+def hermite_explorer(p0=(0.0, 0.0), p1=(4.0, 0.0), d0=(3.0, 9.0), d1=(3.0, -9.0)) -> HermiteExplorer:
+    """Sliders `d0x`, `d0y`, `d1x`, `d1y` (-12..12, steps of 0.5): the components of P'(0) and P'(1). Notes §10.7.
 
-    The defaults give P'(0) ≈ (3, 9) and P'(1) ≈ (3, -9), whose Bézier points are
-    nearly (0, 0), (1, 3), (3, 3), (4, 0). `update` returns {"d0", "d1",
-    "bezier" (4, 2), "curve" (201, 2)}.
+    The defaults are the course's example, P'(0) = (3, 9) and P'(1) = (3, -9),
+    whose Bézier points are (0, 0), (1, 3), (3, 3), (4, 0). `update` returns
+    {"d0", "d1", "bezier" (4, 2), "curve" (201, 2)}.
     """
-    return HermiteExplorer(p0, p1)
+    return HermiteExplorer(p0, p1, d0, d1)

@@ -5,5 +5,5 @@ SAMPLES = {
     "runge_explorer": ({"spacing": "Chebyshev"}, {"nodes", "omega_max", "error", "lebesgue"}),
     "neville_explorer": ({"tau": 2.5}, {"triangle", "point", "row"}),
     "flattening_explorer": ({"tol": 0.01}, {"segments", "bound", "deviation", "fewest"}),
-    "hermite_explorer": ({"length0": 5.0}, {"bezier", "curve", "d0", "d1"}),
+    "hermite_explorer": ({"d0y": 5.0}, {"bezier", "curve", "d0", "d1"}),
 }

@@ -178,16 +178,43 @@ def test_the_fewest_chords_can_be_fewer_than_the_bound_asks_for():
 # ---------------------------------------------------------------- Hermite
 
 
-def test_hermite_explorer_defaults_to_the_flattening_cubic():
-    state = widgets.hermite_explorer().state
-    np.testing.assert_allclose(state["bezier"], notes_example("10.hermite").results["bezier"], atol=0.01)
+def test_hermite_explorer_defaults_to_the_flattening_cubic_exactly():
+    explorer = widgets.hermite_explorer()
+    state = explorer.state
+    example = notes_example("10.hermite")
+    # Exactly, not nearly: the sliders hold the example's tangent components themselves.
+    np.testing.assert_array_equal(state["d0"], example.inputs["d0"])
+    np.testing.assert_array_equal(state["d1"], example.inputs["d1"])
+    np.testing.assert_array_equal(state["bezier"], example.results["bezier"])
     np.testing.assert_allclose(3 * (state["bezier"][1] - state["bezier"][0]), state["d0"])
     np.testing.assert_allclose(state["curve"][[0, -1]], [[0.0, 0.0], [4.0, 0.0]])
+    assert "P'(0) = (3, 9), P'(1) = (3, -9)" in explorer.readout.value
+    assert "(0, 0) (1, 3) (3, 3) (4, 0)" in explorer.readout.value
 
 
 def test_hermite_explorer_tangent_of_zero_length():
-    state = widgets.hermite_explorer().update(length0=0.0, length1=0.0)
+    state = widgets.hermite_explorer().update(d0x=0.0, d0y=0.0, d1x=0.0, d1y=0.0)
     np.testing.assert_allclose(state["bezier"], [[0, 0], [0, 0], [4, 0], [4, 0]])
+
+
+def test_hermite_explorer_static_frames_sweep_the_start_tangent_on_whole_and_half_numbers():
+    explorer = widgets.hermite_explorer()
+    name, frames, start = explorer.static_frames(count=9)
+    assert name == "d0y" and frames[start]["label"] == "9.00"
+    assert "P'(0) = (3, 9)" in frames[start]["readout"]
+    values = [float(frame["label"]) for frame in frames]
+    assert all(2 * v == round(2 * v) for v in values)
+
+
+def test_neville_explorer_keeps_the_labels_of_the_lowest_points_inside_the_frame():
+    explorer = widgets.neville_explorer()
+    explorer.png()  # draws, so the texts have their places
+    ax = explorer.ax
+    renderer = ax.figure.canvas.get_renderer()
+    frame = ax.get_window_extent(renderer)
+    for text in ax.texts:
+        box = text.get_window_extent(renderer)
+        assert box.y0 > frame.y0 and box.y1 < frame.y1, text.get_text()
 
 
 # ---------------------------------------------------------------- the figures
