@@ -25,7 +25,6 @@ from . import _clipping
 from ._clipping import OVERLAP_CHECK_AFTER, SLACK, THIN, TINY
 from ._validation import as_count, as_float_array, as_line, as_points, as_scalar, as_tolerance, as_vector, as_weights
 from .bezier import elevate, evaluate, hodograph, subdivide, to_homogeneous
-from .geometry import join, normalize_line
 from .interpolation import second_derivative_bounds
 from .polynomials import bernstein_horner, bernstein_multiply, bernstein_to_power
 from .roots import bernstein_roots
@@ -620,7 +619,12 @@ def fat_line(points) -> tuple[np.ndarray, float, float]:
         raise ValueError(f"points: expected planar control points of shape (n+1, 2), got shape {pts.shape}")
     if np.array_equal(pts[0], pts[-1]):
         raise ValueError(f"points: P0 = Pn = {pts[0].tolist()}, so there is no line through the two end points")
-    line = normalize_line(join(np.append(pts[0], 1.0), np.append(pts[-1], 1.0)))  # P0 × Pn, a² + b² = 1
+    a, b = pts[0, 1] - pts[-1, 1], pts[-1, 0] - pts[0, 0]  # the first two entries of P0 × Pn
+    length = np.hypot(a, b)
+    a, b = a / length, b / length
+    # c from P0 after normalising, not the cross product's x0 yn - xn y0: for a short piece far from the
+    # origin those two products nearly cancel, and the band would be wider than the piece.
+    line = np.array([a, b, 0.0 - (a * pts[0, 0] + b * pts[0, 1])])
     distances = pts @ line[:2] + line[2]
     return line, float(min(distances.min(), 0.0)), float(max(distances.max(), 0.0))
 

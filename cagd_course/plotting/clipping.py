@@ -278,12 +278,12 @@ def plot_parameter_pairs(ax, steps, depth: int, found=None, color: str = "C0") -
 
 
 def plot_boxes(ax, point_sets, color: str = "C0", alpha: float = 0.12, label: str | None = None,
-               edge_alpha: float | None = None, zorder: float | None = None) -> Axes:
+               edge_alpha: float | None = None, zorder: float | None = None, linestyle: str = "-") -> Axes:
     """The x-y bounding box of each set of control points (one (n+1, 2) array each): the boxes of §7.5-7.6.
 
     alpha is the opacity of the fill, and of the outline unless edge_alpha is
     given (a strong outline keeps small boxes visible); zorder above 2 draws
-    the boxes over the curves.
+    the boxes over the curves; linestyle is that of the outline.
     """
     check_axes(ax)
     face = to_rgba(color, alpha)
@@ -292,6 +292,7 @@ def plot_boxes(ax, point_sets, color: str = "C0", alpha: float = 0.12, label: st
         p = as_float_array(points, "point_sets")
         (x0, y0), (x1, y1) = p.min(axis=0), p.max(axis=0)
         ax.add_patch(Rectangle((x0, y0), x1 - x0, y1 - y0, facecolor=face, edgecolor=edge, linewidth=0.8,
-                               label=label if k == 0 else None, **({} if zorder is None else {"zorder": zorder})))
+                               linestyle=linestyle, label=label if k == 0 else None,
+                               **({} if zorder is None else {"zorder": zorder})))
     ax.autoscale_view()
     return finish_planar(ax)

@@ -178,8 +178,8 @@ class BezoutExplorer(Explorer):
 def _complex(z) -> str:
     z = complex(z)
     if abs(z.imag) < 1e-9:
-        return f"{z.real:.4g}"
-    return f"{z.real:.4g}{'+' if z.imag >= 0 else '−'}{abs(z.imag):.4g}i"
+        return f"{z.real:.4g}".replace("-", "−")  # a minus sign, not a hyphen
+    return f"{z.real:.4g}".replace("-", "−") + f"{'+' if z.imag >= 0 else '−'}{abs(z.imag):.4g}i"
 
 
 def bezout_explorer() -> BezoutExplorer:
@@ -277,7 +277,7 @@ class ClipLabExplorer(Explorer):
         ax.legend([handles[k] for k in keep], [labels[k] for k in keep], fontsize=8, loc="upper left",
                   framealpha=0.9)
         verdict = "the polygon clip is UNSAFE" if len(state["lost"]) else "all three clips are safe"
-        ax.set_title(f"band [{state['dmin']:.2g}, {state['dmax']:.2g}]: {verdict}", fontsize=9)
+        ax.set_title(f"band [{state['dmin']:.2g}, {state['dmax']:.2g}]: {verdict}".replace("-", "−"), fontsize=9)
 
     def describe(self, state: dict) -> str:
         def show(clip):
