@@ -652,7 +652,7 @@ def _to_unscaled(lines: np.ndarray) -> np.ndarray:
 
 
 def _two_lines(h: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """The notes' reduction of the Bézout matrix to two moving lines (unscaled rows), degrees ⌈n/2⌉ and ⌊n/2⌋."""
+    """Two moving lines (unscaled rows): the notes' reduction, degrees ⌈n/2⌉ and ⌊n/2⌋, or a μ-basis if μ < ⌊n/2⌋."""
     n = len(h) - 1
     if len(_following(h, n - 1)) != n:
         # A true degree-n curve has exactly n independent moving lines of degree n-1 (the Bézout rows).
@@ -893,8 +893,9 @@ def moving_lines_implicit(la, lb) -> np.ndarray:
     (x, y, 1) is on the curve when both ℓ_a(t) = Σ (la_j·(x, y, 1)) (1-t)^(d1-j) t^j
     and ℓ_b(t) vanish for one t, that is when their resultant is zero. It is
     the determinant of the d1×d1 (hybrid) Bézout matrix of ℓ_a and ℓ_b, whose
-    entries are quadratic in x and y: for n = 2m an m×m determinant where
-    `bezout_moving_lines` has n×n. Computed exactly as a polynomial, scaled so
+    entries are quadratic in x and y: for two lines of degree m (a generic
+    curve of degree n = 2m) an m×m determinant where `bezout_moving_lines` has
+    n×n; a μ-basis of degrees n - μ and μ gives an (n-μ)×(n-μ) one. Computed exactly as a polynomial, scaled so
     that the largest coefficient is 1; c[i, j] is the coefficient of x^i y^j.
     The two quadratic moving lines (18.69) of the notes' quartic give
     y⁴ + 4x³ + 2xy² - 16x² - 6y² + 16x = 0 (18.87):
