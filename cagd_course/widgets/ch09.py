@@ -55,9 +55,9 @@ MARCH_PRESETS = {
     "a slow simple root": np.array([0.65, -0.36, -0.24, 0.72, 0.45, -7.08]),
     "a double root: the crawl": bernstein_from_roots([0.3, 0.3, 0.7]),
 }
-EVENTS = {"step": "step", "root": "root found", "end": "no more roots", "stalled": "still crawling"}
+EVENTS = {"step": "step", "end": "no more roots", "stalled": "still crawling"}  # "root": see _event
 RULES = {"convex hull": "hull", "control polygon (wrong)": "polygon"}
-MARCH_SHOWN = 100  # steps the slider reaches; the march is cut there (a double root would go on for ever)
+MARCH_SHOWN = 100  # steps per root the march is cut at (a double root would go on for ever)
 DEGREES = (2, 25)
 BERNSTEIN, POWER = "bernstein_roots (Bernstein form)", "numpy.roots (power form)"
 ETA = 2.0**-53  # the unit round-off of doubles
@@ -76,14 +76,24 @@ class HullMarchExplorer(Explorer):
         self.presets = dict(MARCH_PRESETS)
         if coeffs is not None:
             self.presets = {"your polynomial": as_vector(coeffs, "coeffs"), **self.presets}
+        first = next(iter(self.presets))
         controls = {
             "polynomial": widgets.Dropdown(description="f", options=list(self.presets),
                                            layout=widgets.Layout(width="300px")),
-            "step": _slider(widgets.IntSlider, "step k", min=0, max=MARCH_SHOWN, value=0),
+            # The slider runs over the march's steps, t_0 to its end (so do the static page's frames).
+            "step": _slider(widgets.IntSlider, "step k", min=0,
+                            max=len(self._march(tuple(self.presets[first]))) - 1, value=0),
             "rule": widgets.Dropdown(description="step to", options=list(RULES),
                                      layout=widgets.Layout(width="300px")),
         }
+        for name in ("polynomial", "rule"):
+            controls[name].observe(self._fit_steps, names="value")
         super().__init__(controls)
+
+    def _fit_steps(self, change=None) -> None:
+        # Runs before the redraw: the slider's range follows the new march (a step beyond its end moves there).
+        coeffs = self.presets[self.controls["polynomial"].value]
+        self.controls["step"].max = len(self._march(tuple(coeffs), RULES[self.controls["rule"].value])) - 1
 
     @staticmethod
     @cache
@@ -109,7 +119,7 @@ class HullMarchExplorer(Explorer):
             "crossing": steps[k].crossing,
             "event": steps[k].event,
             "roots": np.array([s.root for s in steps[: k + 1] if s.root is not None]),
-            "value": float(steps[k].coeffs[0]),
+            "value": float(bernstein_horner(coeffs, steps[k].start)),
             "ratio": ratio,
         }
 
@@ -120,16 +130,17 @@ class HullMarchExplorer(Explorer):
         room = 0.1 * max(high - low, 1e-12)
         ax.set_ylim(min(low, 0) - room, max(high, 0) + room)
         ax.legend(fontsize=8, loc="best")
-        event = EVENTS[state["event"]]
+        event = _event(state["steps"][state["step"]], state["step"])
         to = "hull" if RULES[state["rule"]] == "hull" else "polygon"
         ax.set_title(f"marching to the {to}, k = {state['step']} of {len(state['steps']) - 1}: {event}",
                      fontsize=10)
 
     def describe(self, state: dict) -> str:
-        k, steps = state["step"], state["steps"]
+        k, steps, coeffs = state["step"], state["steps"], state["coeffs"]
+        # f itself at t_k (after a deflation the piece's first coefficient is no longer f's value).
         rows = "".join(
-            f"<tr><td{CELL}>{j}</td><td{CELL}>{s.start:.12f}</td><td{CELL}>{s.coeffs[0]:.3e}</td>"
-            f"<td{CELL}>{s.event}</td></tr>"
+            f"<tr><td{CELL}>{j}</td><td{CELL}>{s.start:.12f}</td>"
+            f"<td{CELL}>{bernstein_horner(coeffs, s.start):.3e}</td><td{CELL}>{_event(s, j)}</td></tr>"
             for j, s in list(enumerate(steps[: k + 1]))[-6:]
         )
         head = "".join(f"<th{CELL}>{name}</th>" for name in ("k", "t_k", "f(t_k)", "event"))
@@ -140,8 +151,15 @@ class HullMarchExplorer(Explorer):
         return f"{table}roots: {found}{ratio}<br>the roots (bernstein_roots): {truth}"
 
 
+def _event(step, k: int) -> str:
+    """What step k does, for the title and the table: a root is named by its index (t_6 for the notes' k = 6)."""
+    if step.event != "root":
+        return EVENTS[step.event]
+    return f"t_{k if step.crossing is None else k + 1} is a root"
+
+
 def hull_march_explorer(coeffs=None) -> HullMarchExplorer:
-    """Dropdowns `polynomial` and `rule`, slider `step` (0..100): the march of §9.1 step by step. Notes §9.1, Fig. 9.1.
+    """Dropdowns `polynomial` and `rule`, slider `step` (0 to the march's last step): §9.1 step by step. Notes Fig. 9.1.
 
     coeffs: Bernstein coefficients (n+1,) on [0, 1], offered first as "your
     polynomial". Presets: the course's quartic standing in for Figure 9.1, the
@@ -151,7 +169,7 @@ def hull_march_explorer(coeffs=None) -> HullMarchExplorer:
     the "convex hull" (the algorithm) or to the "control polygon (wrong)".
     `update` returns {"polynomial", "rule", "coeffs", "steps" (the `MarchStep`s, cut at 100 per root),
     "step" (k shown), "start" (t_k), "crossing" (t_(k+1) or None), "event",
-    "roots" (found so far), "value" (f(t_k) of the current piece), "ratio" (of
+    "roots" (found so far), "value" (f(t_k), of f itself), "ratio" (of
     the last two step lengths, or None)}.
     """
     return HullMarchExplorer(coeffs)

@@ -37,16 +37,42 @@ def test_the_march_explorer_retraces_the_chapter_example():
     assert state["start"] == 0.0 and state["crossing"] == MARCHING.results["steps"][0]
     state = explorer.update(step=MARCHING.results["k"] - 1)  # the sixth step declares the first root
     assert state["event"] == "root"
+    assert explorer.ax.get_title().endswith("k = 5 of 20: t_6 is a root")  # named as the chapter names it
+    assert "t_6 is a root" in explorer.describe(state)
     np.testing.assert_allclose(state["roots"], MARCHING.results["roots"][:1], atol=1e-12)
-    last = explorer.update(step=100)  # past the end: the last step is shown
-    assert last["event"] == "end" and last["step"] == len(last["steps"]) - 1
+    # the slider ends where the march ends
+    last = explorer.update(step=explorer.controls["step"].max)
+    assert last["event"] == "end" and last["step"] == len(last["steps"]) - 1 == 20
     np.testing.assert_allclose(last["roots"], hull_march(MARCHING.inputs["coeffs"]), atol=1e-14)
+    with pytest.raises(ValueError, match="^step"):
+        explorer.update(step=21)
+
+
+def test_the_march_readout_shows_f_itself_after_a_deflation():
+    explorer = widgets.hull_march_explorer()
+    state = explorer.update(polynomial="Figure 9.1 (course quartic)", step=6)  # the piece after the first root
+    assert state["steps"][6].coeffs[0] < -4  # the deflated polynomial's first coefficient
+    assert abs(state["value"]) < 1e-14  # f(t_6): t_6 is the root
+    text = explorer.describe(state)
+    assert "-4.333e+00" not in text and ">f(t_k)<" in text
+
+
+def test_the_step_slider_follows_the_march_so_the_static_frames_show_it_all():
+    explorer = widgets.hull_march_explorer()
+    name, frames, start = explorer.static_frames(21)
+    assert name == "step" and start == 0
+    assert [f["label"] for f in frames] == [str(k) for k in range(21)]  # one frame per step of the quartic
+    assert len({f["alt"] for f in frames}) == 21  # no two frames alike
+    explorer.update(polynomial="a double root: the crawl", step=50)
+    assert explorer.controls["step"].max == 100
+    state = explorer.update(polynomial="the pitfall: a linear f")  # a shorter march: the step moves to its end
+    assert explorer.controls["step"].max == 1 and state["step"] == 1
 
 
 def test_the_step_ratio_shows_linear_convergence_and_the_crawl():
     explorer = widgets.hull_march_explorer()
     simple = explorer.update(polynomial="Figure 9.1 (course quartic)", step=15)["ratio"]
-    crawl = explorer.update(polynomial="a double root: the crawl", step=100)
+    crawl = explorer.update(polynomial="a double root: the crawl", step=100)  # the march is cut at 100 steps
     assert 0.05 < simple < 0.5
     assert crawl["event"] == "stalled" and crawl["ratio"] > 0.9 and crawl["roots"].size == 0
     assert 0.28 < crawl["start"] < 0.3
@@ -66,12 +92,13 @@ def test_the_march_readout_keeps_its_columns_apart():
 
 def test_stepping_to_the_control_polygon_jumps_the_root_of_the_cubic():
     explorer = widgets.hull_march_explorer()
-    polygon = explorer.update(polynomial="<1, -1, 2, -3>: hull against polygon", rule="control polygon (wrong)",
-                              step=100)
+    explorer.update(polynomial="<1, -1, 2, -3>: hull against polygon", rule="control polygon (wrong)")
+    polygon = explorer.update(step=explorer.controls["step"].max)  # the end of the march
     assert [round(s.start, 6) for s in polygon["steps"][:3]] == [0.0, round(1 / 6, 6), 0.337778]
     np.testing.assert_allclose(polygon["roots"], [0.8])  # the wrong "root", past the true one
     assert "polygon" in explorer.ax.get_title()
-    hull = explorer.update(rule="convex hull")
+    explorer.update(rule="convex hull")
+    hull = explorer.update(step=explorer.controls["step"].max)
     np.testing.assert_allclose(hull["roots"], hull_march([1.0, -1.0, 2.0, -3.0]), atol=1e-12)
     assert "0.596013393" in explorer.describe(hull)
 
@@ -79,7 +106,7 @@ def test_stepping_to_the_control_polygon_jumps_the_root_of_the_cubic():
 def test_the_march_explorer_takes_a_polynomial_of_ones_own():
     explorer = widgets.hull_march_explorer([0.5, -1.0, 1.0])
     assert explorer.values["polynomial"] == "your polynomial"
-    state = explorer.update(step=100)
+    state = explorer.update(step=explorer.controls["step"].max)
     np.testing.assert_allclose(state["roots"], hull_march([0.5, -1.0, 1.0]), atol=1e-12)
     with pytest.raises(ValueError, match="^coeffs"):
         widgets.hull_march_explorer([[1.0, 2.0]])
