@@ -131,7 +131,7 @@ class DoublePointClassifier(Explorer):
                  "acnode": "two complex tangent lines: an isolated real point"}[state["kind"]]
         return "<br>".join([
             f"tangent cone f̂₂(a, b) = {_sum([(a, 'a²'), (b, 'ab'), (c, 'b²')])} (the lowest part at the origin)",
-            f"B² − 4AC = {state['discriminant']:.3g}: {state['kind']}, {lines}",
+            f"B² − 4AC = {_minus(format(state['discriminant'], '.3g'))}: {state['kind']}, {lines}",
         ])
 
 
@@ -191,7 +191,7 @@ class PencilParametrizationExplorer(Explorer):
         plot_curve(ax, state["c"], *box, colors="0.75", linewidths=5.0)
         # every t, t = ∞ included: a finite range of t would leave a gap in the curve next to the centre
         plot_parametrization(ax, state["xyw"], None, samples=2400, label="(X(t)/W(t), Y(t)/W(t))")
-        plot_pencil_ray(ax, state["point"], state["t"], *box, label=f"y − y0 = {state['t']:.2f}(x − x0)")
+        plot_pencil_ray(ax, state["point"], state["t"], *box, label=_minus(f"y − y0 = {state['t']:.2f}(x − x0)"))
         ax.plot(*state["point"], **SINGULAR_STYLE)
         if state["xy"] is not None:
             ax.plot(*state["xy"], "o", color="C2", markersize=9, markeredgecolor="black")
@@ -203,11 +203,12 @@ class PencilParametrizationExplorer(Explorer):
     def describe(self, state: dict) -> str:
         x, y, w = state["xyw"]
         where = "at infinity" if state["xy"] is None else f"{_fmt(state['xy'])}, f there {state['residual']:.1e}"
+        centre = _minus(_fmt(state["point"]))
         return "<br>".join([
-            f"{_equation(state['c'])}; the lines turn about the pencil's centre (x0, y0) = {_fmt(state['point'])}, "
+            f"{_equation(state['c'])}; the lines turn about the pencil's centre (x0, y0) = {centre}, "
             "a point of multiplicity n − 1",
             f"x(t) = {_quotient(x, w)},  y(t) = {_quotient(y, w)}",
-            f"t = {state['t']:.2f}: the green point {where}",
+            _minus(f"t = {state['t']:.2f}: the green point {where}"),
             f"the parametrization reaches (x0, y0) itself at {_through(state['xyw'], state['point'])}",
         ])
 
@@ -229,7 +230,7 @@ def _through(xyw: np.ndarray, point: np.ndarray) -> str:
         texts.append(text)
     texts = [f"{text} (twice)" if texts.count(text) > 1 else text for text in dict.fromkeys(texts)]
     extra = ", and t = ∞" if nonzero[-1] < len(low) - 2 else ""
-    return "t = " + ", ".join(texts) + extra + (" (complex: an isolated point)" if any(
+    return _minus("t = " + ", ".join(texts)) + extra + (" (complex: an isolated point)" if any(
         abs(r.imag) > 1e-9 * max(1.0, abs(r)) for r in roots) else "")
 
 
@@ -291,17 +292,16 @@ class SilhouetteExplorer(TwoPanels, Explorer):
         inverse = np.array([[np.cos(phi), np.sin(phi)], [-np.sin(phi), np.cos(phi)]])
         centre = np.asarray(centre)
         c = plane_curves.transform_implicit(base, inverse, centre - inverse @ centre)
-        d = plane_curves.curve_discriminant(c)
-        roots = P.polyroots(d) if len(d) > 1 else np.zeros(0)
-        real = np.sort(roots[np.abs(roots.imag) <= 1e-6 * (1 + np.abs(roots))].real)
+        d = _without_noise(plane_curves.curve_discriminant(c))
         point = None
         if double_point is not None:  # where the turn takes it: p -> centre + R (p - centre)
             point = centre + inverse.T @ (np.asarray(double_point) - centre)
+        roots, multiplicities = _real_roots(d, None if point is None else point[0])
         zoom = view == VIEWS[1] and point is not None
         if zoom:
             box = ((point[0] - half, point[0] + half), (point[1] - half, point[1] + half))
-        return {"curve": curve, "angle": float(angle), "view": view, "c": c, "discriminant": d, "roots": real,
-                "double_point": point, "zoom": zoom, "box": box}
+        return {"curve": curve, "angle": float(angle), "view": view, "c": c, "discriminant": d, "roots": roots,
+                "multiplicities": multiplicities, "double_point": point, "zoom": zoom, "box": box}
 
     def draw(self, ax, state: dict) -> None:
         lower = self.lower_axes()  # first: the upper panel's box is final before its limits are fitted to it
@@ -325,7 +325,8 @@ class SilhouetteExplorer(TwoPanels, Explorer):
         lower.tick_params(labelsize=8)
 
     def describe(self, state: dict) -> str:
-        roots = ", ".join(f"{x:.4g}" for x in state["roots"]) or "none"
+        roots = ", ".join(_minus(f"{x:.4g}") + ("" if m == 1 else f" ({MULTIPLE.get(m, f'{m}-fold')})")
+                          for x, m in zip(state["roots"], state["multiplicities"])) or "none"
         return "<br>".join([
             f"Res_y(f, ∂f/∂y), a polynomial in x of degree {len(state['discriminant']) - 1}; real roots x = {roots}",
             "a simple root: a vertical tangent; a root of multiplicity 2 or more: a singular point (a double root at "
@@ -333,6 +334,60 @@ class SilhouetteExplorer(TwoPanels, Explorer):
             "lower panel: Res_y(f, f_y) on a symmetric log scale (linear near 0), where a simple root is a crossing "
             "and a double root a touch",
         ])
+
+
+# Rounding noise in Res_y(f, f_y): a turned curve's resultant has leading coefficients of about 1e-15 of its largest
+# one where the exact ones are zero (the cubic of §19.5 has degree 4 at every angle, its f₃ being (x + y)³).
+NEGLIGIBLE = 1e-10
+# Exercise 19.4's rule 1: a root is real when |Im x| <= IMAGINARY max(1, |x|), and real roots closer than
+# MERGE max(1, |x|) are one root (their mean), whose multiplicity is the number merged.
+IMAGINARY, MERGE = 1e-5, 1e-7
+# The curve's double point must make Res_y and its derivative this small (relative to the sizes of their terms) to
+# be divided out as a double root.
+DOUBLE_ROOT = 1e-9
+MULTIPLE = {2: "double", 3: "triple"}
+
+
+def _minus(text: str) -> str:
+    """A number as text with the minus sign − instead of the hyphen."""
+    return text.replace("-", "−")
+
+
+def _without_noise(d: np.ndarray) -> np.ndarray:
+    """d without the leading coefficients below NEGLIGIBLE times its largest: those are rounding, not degree."""
+    d = np.asarray(d, dtype=float)
+    kept = np.flatnonzero(np.abs(d) > NEGLIGIBLE * np.abs(d).max()) if d.size else np.zeros(0, dtype=int)
+    return d[: kept[-1] + 1] if kept.size else d[:1]
+
+
+def _real_roots(d: np.ndarray, double: float | None = None) -> tuple[np.ndarray, list[int]]:
+    """The distinct real roots of d, sorted, and their multiplicities.
+
+    A double root is ill-conditioned: rounding splits it into two real roots or a complex pair up to 1e-4 apart
+    near the turns where a second root comes close (a vertical tangent next to the double point), more than any
+    rule for merging roots can tell from two distinct ones. The x of the curve's double point, `double`, is a root
+    of multiplicity at least two (§19.4); once d and d' are checked to vanish there, (x - double)² is divided out
+    and the rest found from the quotient, a polynomial whose roots are well separated from each other.
+    """
+    found = []
+    if double is not None and len(d) >= 3:
+        powers = max(1.0, abs(double)) ** np.arange(len(d))
+        dd = P.polyder(d)
+        if (abs(P.polyval(double, d)) <= DOUBLE_ROOT * (np.abs(d) @ powers)
+                and abs(P.polyval(double, dd)) <= DOUBLE_ROOT * (np.abs(dd) @ powers[:-1])):
+            d = P.polydiv(d, [double * double, -2.0 * double, 1.0])[0]
+            found = [double, double]
+    roots = P.polyroots(d) if len(d) > 1 else np.zeros(0)
+    roots = roots[np.abs(roots.imag) <= IMAGINARY * np.maximum(1.0, np.abs(roots))].real
+    groups: list[list[float]] = []
+    for x in np.sort(np.concatenate([roots, found])):
+        if groups and abs(x - groups[-1][-1]) <= MERGE * max(1.0, abs(x)):
+            groups[-1].append(x)
+        else:
+            groups.append([x])
+    # the double point's x stays exact when a root of the quotient joins it
+    values = [double if double in g else float(np.mean(g)) for g in groups]
+    return np.array(values), [len(g) for g in groups]
 
 
 def _quiet_corner(ax, lines=()) -> str:
@@ -361,7 +416,7 @@ def silhouette_explorer(curve: str = "cubic of §19.5", angle: float = 0.0,
     """Slider `angle` (the curve turned about a point, degrees), dropdowns `curve` and `view`: Res_y(f, f_y) below.
 
     `update` returns {"curve", "angle", "view", "c" the turned curve, "discriminant" Res_y(f, f_y) (ascending in x),
-    "roots" its real roots, "double_point" where the turn took it (None for a curve without one), "zoom" whether
-    the view is the zoom about it, "box"}. Notes §19.4.
+    "roots" its distinct real roots, "multiplicities" theirs, "double_point" where the turn took it (None for a
+    curve without one), "zoom" whether the view is the zoom about it, "box"}. Notes §19.4.
     """
     return SilhouetteExplorer(curve, angle, view)

@@ -6,12 +6,15 @@ matplotlib.use("Agg")
 
 import numpy as np  # noqa: E402
 import pytest  # noqa: E402
+import sympy as sp  # noqa: E402
 from matplotlib.figure import Figure  # noqa: E402
 from numpy.polynomial import polynomial as P  # noqa: E402
 
 from cagd_course import widgets  # noqa: E402
+from cagd_course.book.build import DEFAULT_FRAMES  # noqa: E402
 from cagd_course.examples import notes_example  # noqa: E402
 from cagd_course.plotting import singular_points as figures  # noqa: E402
+from cagd_course.widgets._static import _sweep  # noqa: E402
 from cagd_course.widgets.ch19 import CURVES, SILHOUETTES  # noqa: E402
 from cagd_ref import algebra  # noqa: E402
 
@@ -57,14 +60,78 @@ def test_the_silhouette_roots_are_vertical_tangents_and_the_double_point():
     state = explorer.state
     example = notes_example("19.silhouette")
     assert np.allclose(state["discriminant"], example.results["discriminant"])
-    assert np.allclose(state["roots"], sorted([2.0, 2.0, *example.results["vertical_tangents"]]), atol=1e-6)
+    assert np.allclose(state["roots"], sorted([2.0, *example.results["vertical_tangents"]]), atol=1e-9)
+    assert state["multiplicities"] == [1, 2, 1]
     turned = explorer.update(angle=40.0)
-    assert len(turned["roots"]) >= 2
+    assert len(turned["roots"]) == 3
     for x in turned["roots"]:
         column = P.polyval(x, turned["c"])  # f(x, y) as a polynomial in y has a double root there
         assert len(algebra.poly_gcd(column, P.polyder(column), tol=1e-5)) >= 2
     assert len(explorer.figure.axes) == 2
     assert set(SILHOUETTES) == set(explorer.controls["curve"].options)
+
+
+def _static_angles(explorer) -> list[float]:
+    """The angles of the static figure's frames in the book (its slider swept over DEFAULT_FRAMES values)."""
+    return [float(a) for a in _sweep(explorer.controls["angle"], DEFAULT_FRAMES)]
+
+
+# the turns at which a tangent at the double point is vertical, next to them, and a few others
+MORE_ANGLES = [-90.0 + 1e-9, -63.43494882292201, -56.309932474020215, -49.10660535086906, -1.0, 1.0, 13.0, 49.1066,
+               77.0, 89.0]
+
+
+@pytest.mark.parametrize("curve", [name for name, item in SILHOUETTES.items() if item[3] is not None])
+def test_every_frame_shows_the_double_point_over_a_double_root_and_nothing_spurious(curve):
+    explorer = widgets.silhouette_explorer(curve)
+    base, centre, _, double_point, _ = SILHOUETTES[curve]
+    angles = _static_angles(explorer)
+    assert len(angles) >= 21 and -90.0 in angles and 90.0 in angles
+    for angle in angles + MORE_ANGLES:
+        state = explorer.compute(angle=angle, curve=curve, view="whole curve")
+        phi = np.radians(angle)
+        # the double point turned about the centre, computed here on its own: x0 + cos φ (x - x0) - sin φ (y - y0)
+        x_double = centre[0] + np.cos(phi) * (double_point[0] - centre[0]) - np.sin(phi) * (double_point[1] - centre[1])
+        # exactly 4, as SymPy finds for exact rotations (below); the crunode untouched has degree 3, 576x²(x + 9)
+        degree = 3 if curve.startswith("crunode") and angle == 0.0 else 4
+        assert len(state["discriminant"]) - 1 == degree, angle
+        roots, multiplicities = state["roots"], state["multiplicities"]
+        assert sum(multiplicities) <= degree and np.all(np.diff(roots) > 0)
+        k = int(np.argmin(np.abs(roots - x_double)))
+        assert roots[k] == pytest.approx(x_double, abs=1e-12) and multiplicities[k] >= 2, angle
+        for x in roots:  # each a vertical tangent or the double point: f(x, ·) and f_y(x, ·) share a y there
+            column = P.polyval(x, state["c"])
+            assert len(algebra.poly_gcd(column, P.polyder(column), tol=1e-6)) >= 2, (angle, x)
+            # the cubic's vertical tangents stay within |x| < 70; the crunode's third one runs off to infinity as
+            # the turn goes to 0 (its resultant's leading coefficient with it), 5831 at 1°
+            assert abs(x) < (100.0 if curve == "cubic of §19.5" else 1e4), (angle, x)
+        readout = explorer.describe(state)
+        assert f"degree {degree};" in readout and "-" not in readout
+        assert f"{x_double:.4g}".replace("-", "−") + " (double)" in readout or multiplicities[k] > 2
+
+
+def _exact_real_roots(curve: str, cos: sp.Rational, sin: sp.Rational) -> tuple[int, list[tuple[float, int]]]:
+    """The degree of Res_y(f, f_y) of the curve turned exactly by (cos, sin) about its centre, and its real roots."""
+    x, y = sp.symbols("x y")
+    base, centre, *_ = SILHOUETTES[curve]
+    f = sum(sp.Integer(int(v)) * x**i * y**j for (i, j), v in np.ndenumerate(base))
+    cx, cy = (sp.nsimplify(v) for v in centre)
+    turned = sp.expand(f.subs({x: cos * (x - cx) + sin * (y - cy) + cx, y: -sin * (x - cx) + cos * (y - cy) + cy},
+                              simultaneous=True))
+    r = sp.Poly(sp.resultant(turned, sp.diff(turned, y), y), x)
+    roots = sp.real_roots(r)
+    return r.degree(), [(float(v), roots.count(v)) for v in sorted(set(roots), key=float)]
+
+
+@pytest.mark.parametrize("curve", ["cubic of §19.5", "crunode x³ + 9x² − 12y² (Fig. 19.2)"])
+@pytest.mark.parametrize("cos, sin", [(sp.Rational(4, 5), sp.Rational(3, 5)), (sp.Rational(12, 13), sp.Rational(5, 13)),
+                                      (sp.Rational(3, 5), sp.Rational(-4, 5)), (sp.Integer(0), sp.Integer(1))])
+def test_the_silhouette_roots_are_the_exact_real_roots(curve, cos, sin):
+    degree, exact = _exact_real_roots(curve, cos, sin)
+    state = widgets.silhouette_explorer(curve, angle=float(np.degrees(np.arctan2(float(sin), float(cos))))).state
+    assert len(state["discriminant"]) - 1 == degree == 4
+    assert state["multiplicities"] == [m for _, m in exact]
+    assert np.allclose(state["roots"], [v for v, _ in exact], rtol=1e-9, atol=1e-9)
 
 
 @pytest.mark.parametrize("curve", list(SILHOUETTES))
@@ -144,6 +211,12 @@ def test_the_readouts_use_the_chapter_s_letters_and_readable_formulas():
     assert "x³ + 2x²y + 3xy² + 4y³ + 5x² + 6xy + 7y² = 0" in cubic.readout.value
     silhouette = widgets.silhouette_explorer()
     assert "Res_y(f, ∂f/∂y)" in silhouette.readout.value and "D(x)" not in silhouette.readout.value
+    assert "degree 4; real roots x = −0.1126, 2 (double), 2.631" in silhouette.readout.value
+    acnode = widgets.double_point_kind_explorer(k=-4.0)  # B² − 4AC = 12k, with the minus sign, not a hyphen
+    assert "B² − 4AC = −48:" in acnode.readout.value and "-" not in acnode.readout.value
+    for name in CURVES:  # negative numbers with the minus sign in the pencil's readout too
+        readout = widgets.pencil_parametrization_explorer(name, t=-1.5).readout.value
+        assert "t = −1.50:" in readout and "-" not in readout
 
 
 def test_a_curve_s_legend_entry_has_its_line_style():
