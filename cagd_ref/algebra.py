@@ -919,9 +919,11 @@ def inversion(points, weights=None) -> tuple[np.ndarray, np.ndarray]:
     (17.13) of `cubic_inversion_lines` (exact for integer data), or where
     P1, P2, P3 are collinear the null space of the linear system
     (17.15)-(17.20) in the Bernstein basis, unique up to scale for a cubic;
-    n >= 4: that null space, the member whose den is closest to 1 over t in
-    [0, 1] (least squares). Scaled
-    so that den's largest coefficient is +1. At a double point num = den = 0.
+    n >= 4: that null space (of dimension n - 2), the member whose den is
+    closest to 1 over t in [0, 1] (least squares). Like every single member
+    of that family it also gives 0/0 at n - 3 ordinary points of the curve,
+    which is why `invert` evaluates a whole basis instead. Scaled so that
+    den's largest coefficient is +1. At a double point num = den = 0.
     Notes §17.6, §17.7.
 
     >>> num, den = inversion([(1.0, 0.0), (5.0, 0.0), (5.0, 2.0), (4.0, 3.0)])
@@ -996,22 +998,29 @@ def invert(points, xy, weights=None, tol: float = 1e-9) -> float | np.ndarray:
     return float(ts[0]) if single else ts
 
 
-def inversion_plain(points, weights=None) -> tuple[np.ndarray, np.ndarray]:
+def inversion_plain(points, weights=None, basis: bool = False) -> tuple[np.ndarray, np.ndarray]:
     """An inversion formula t = num/den by linear algebra, (17.15)-(17.20) in the power basis: the plain form. §17.7.
 
     For a curve of degree n >= 2, num and den have degree k = max(1, n - 2)
     (arrays (k+1, k+1), c[i, j] of xⁱ yʲ). Their coefficients are a null
     vector of the linear system t·den(X, Y, W) - num(X, Y, W) ≡ 0, with
     X(t), Y(t), W(t) the homogeneous curve in the power basis and every
-    monomial made homogeneous, xⁱ yʲ -> Xⁱ Yʲ W^(k-i-j). For n = 2 and n = 3
-    the null space has the dimensions 2 and 1; from n = 4 on it is larger, and
-    the last singular vector is one member of it (`inversion` chooses the member
-    best conditioned on [0, 1]). A line (n = 1) has degenerate members (num =
-    den = the line itself): ValueError, `inversion` projects onto the chord.
+    monomial made homogeneous, xⁱ yʲ -> Xⁱ Yʲ W^(k-i-j). The null space has
+    the dimension r = (k+1)(k+2) - (k n + 2), the excess of unknowns over
+    equations: 2 for n = 2, 1 for n = 3, n - 2 from n = 4 on. The default
+    returns its last singular vector, one member (`inversion` chooses the
+    member best conditioned on [0, 1]); basis=True returns all r members of
+    a basis, (nums, dens) of shape (r, k+1, k+1). For n >= 4 every single
+    member gives 0/0 at n - 3 ordinary points of the curve as well as at its
+    double points (`invert_plain` therefore uses the whole basis). A line
+    (n = 1) has degenerate members (num = den = the line itself):
+    ValueError, `inversion` projects onto the chord.
 
     >>> num, den = inversion_plain([(4.0, 1.0), (5.0, 6.0), (5.0, 0.0), (6.0, 4.0)], [1.0, 2.0, 2.0, 1.0])
     >>> (np.round(156 * num / den[1, 0], 6) + 0).tolist()        # (1089 x - 172 y - 4184) / (156 x - 8 y + 758)
     [[-4184.0, -172.0], [1089.0, 0.0]]
+    >>> inversion_plain([(0.0, 0.0), (1.0, 2.0), (3.0, -1.0), (4.0, 2.0), (5.0, 0.0)], basis=True)[1].shape
+    (2, 3, 3)
     """
     h = bernstein_to_power(homogeneous_points(points, weights))  # X, Y, W: ascending power coefficients in t
     n = len(h) - 1
@@ -1029,37 +1038,48 @@ def inversion_plain(points, weights=None) -> tuple[np.ndarray, np.ndarray]:
         values.append(value)
     den_columns = [np.pad(np.concatenate([[0.0], v]), (0, size - len(v) - 1)) for v in values]  # t · monomial
     num_columns = [-np.pad(v, (0, size - len(v))) for v in values]
-    null = np.linalg.svd(np.column_stack(den_columns + num_columns))[2][-1]  # the (last) null vector
-    num, den = np.zeros((k + 1, k + 1)), np.zeros((k + 1, k + 1))
+    matrix = np.column_stack(den_columns + num_columns)  # size equations, 2 len(monomials) unknowns
+    members = matrix.shape[1] - matrix.shape[0]  # the dimension of the null space
+    null = np.linalg.svd(matrix)[2][-members:]  # the right singular vectors of the smallest singular values
+    nums, dens = np.zeros((members, k + 1, k + 1)), np.zeros((members, k + 1, k + 1))
     for index, (i, j) in enumerate(monomials):
-        den[i, j], num[i, j] = null[index], null[len(monomials) + index]
-    return num, den
+        dens[:, i, j], nums[:, i, j] = null[:, index], null[:, len(monomials) + index]
+    return (nums, dens) if basis else (nums[-1], dens[-1])
 
 
 def invert_plain(points, xy, weights=None, tol: float = 1e-9) -> float | np.ndarray:
     """The parameter of a point (2,) or points (k, 2) of a curve of degree n >= 2, from `inversion_plain`. §17.7.
 
-    The plain form of `invert`: one formula for every point.
-
-    A point where num and den both vanish (to tol times their size there) is a
-    double point: ValueError.
+    The plain form of `invert`: at every point it evaluates each member of a
+    basis of the inversion formulas and uses the one whose den is largest
+    there, relative to the size of its terms. A point where every member has
+    den = 0 (below tol times that size) is a double point, where num = 0 as
+    well: ValueError. One member alone is not enough from n = 4 on: it is
+    also 0/0 at n - 3 ordinary points of the curve.
 
     >>> invert_plain([(1.0, 0.0), (5.0, 0.0), (5.0, 2.0), (4.0, 3.0)], [[4.375, 1.125], [-26.0, 9.0]]).round(9).tolist()
     [0.5, -1.0]
     """
-    num, den = inversion_plain(points, weights)
+    nums, dens = inversion_plain(points, weights, basis=True)
     pts = as_float_array(xy, "xy")
     single = pts.shape == (2,)  # one point gives a number
     if not single and (pts.ndim != 2 or pts.shape[1] != 2):
         raise ValueError(f"xy: expected a point (2,) or points (k, 2), got shape {pts.shape}")
     tol = as_tolerance(tol, below_one=True)
     x, y = pts.reshape(-1, 2).T
-    top, bottom = P.polyval2d(x, y, num), P.polyval2d(x, y, den)
-    # the size of the terms at each point: values below tol times it are zero to rounding
-    size = P.polyval2d(np.maximum(np.abs(x), 1), np.maximum(np.abs(y), 1), np.abs(num) + np.abs(den))
-    if np.any((np.abs(top) <= tol * size) & (np.abs(bottom) <= tol * size)):
-        raise ValueError("xy: num = den = 0 at a double point of the curve, which two parameters reach")
-    return float(top[0] / bottom[0]) if single else top / bottom
+    big_x, big_y = np.maximum(np.abs(x), 1), np.maximum(np.abs(y), 1)
+    best, ts = np.zeros(len(x)), np.zeros(len(x))
+    for num, den in zip(nums, dens):  # every member of the basis, at every point
+        top, bottom = P.polyval2d(x, y, num), P.polyval2d(x, y, den)
+        size = P.polyval2d(big_x, big_y, np.abs(num) + np.abs(den))  # the size of the terms at each point
+        quality = np.abs(bottom) / size
+        quality[np.abs(bottom) <= tol * size] = 0.0  # den = 0 to rounding: this member is of no use here
+        better = quality > best
+        ts[better], best[better] = top[better] / bottom[better], quality[better]
+    if np.any(best == 0):
+        raise ValueError("xy: every inversion formula has den = 0 there: a double point of the curve (num = 0 too, "
+                         "two parameters reach it) or a point that no finite t reaches")
+    return float(ts[0]) if single else ts
 
 
 # --- §17.8 intersection by implicitization ------------------------------------------------------------------------

@@ -56,19 +56,25 @@ def plot_sign_regions(ax, coeffs, xlim, ylim, resolution: int = 240, label: str 
 
 
 def plot_extended_curve(ax, points, weights=None, interval=(-1.0, 2.0), samples: int = 400, label: str = "P(t)",
-                        **style) -> Axes:
+                        extension_label: str | None = None, **style) -> Axes:
     """The curve for t in [0, 1] (solid) and beyond it over `interval` (dashed). Notes §17.1.
 
     A rational curve may run off to infinity outside [0, 1] (where its weight
     polynomial vanishes); `curves.bezier_samples` breaks the line there.
+    `extension_label` names the dashed part in a legend (None: no entry).
     """
     check_axes(ax)
     lo, hi = as_interval(interval, "interval")
     options = {"color": "C0", "linewidth": 2.2, **style}
+    named = False
     for a, b in ((lo, min(0.0, hi)), (max(1.0, lo), hi)):
         if b > a:
-            ax.plot(*bezier_samples(points, weights, (a, b), samples // 4).T, **{**options, "linestyle": "--",
-                                                                                 "linewidth": 1.0})
+            # each dashed piece gets samples in proportion to its length (at least a quarter of them)
+            count = max(samples // 4, int(samples * (b - a)))
+            ax.plot(*bezier_samples(points, weights, (a, b), count).T,
+                    **{**options, "linestyle": "--", "linewidth": 1.0,
+                       "label": None if named else extension_label})
+            named = True
     ax.plot(*bezier_samples(points, weights, (0.0, 1.0), samples).T, label=label, **options)
     return finish_planar(ax)
 

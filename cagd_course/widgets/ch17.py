@@ -266,7 +266,8 @@ class ImplicitIntersectionExplorer(TwoPanels, Explorer):
         ax.set(xticks=[], yticks=[], xlabel="", ylabel="")
         lower = self.lower_axes()
         plot_intersection_polynomial(lower, state["polynomial"], state["u_roots"])
-        lower.legend(fontsize=8, loc="lower left")
+        # above the panel, in the gap under the curves, so that it hides no part of the graph or the polygon
+        lower.legend(fontsize=8, loc="lower center", bbox_to_anchor=(0.5, 1.0), ncol=3, frameon=False)
 
     def describe(self, state: dict) -> str:
         rows = "".join(f"<tr><td>{k}</td><td>{t:.4f}</td><td>{_fmt(p)}</td><td>{u:.4f}</td></tr>"

@@ -370,9 +370,12 @@ EXERCISES = [
         reference=algebra.invert,
         cases=invert_cases,
         compare=close(1e-8, 1e-8),
-        hint="For a quadratic t = l20 / (l20 - l21) or l10 / (l10 - l20) (each fails at one end); for a cubic "
-        "the row operation of (17.13) gives t = l_b / (l_b - l_a). Any degree: t is the common real root of "
-        "X(t) - x W(t) and Y(t) - y W(t), the root of their GCD. 0/0 (two roots) is a double point: ValueError.",
+        hint="For a quadratic t = (l20 - l10) / (2 l20 - l21 - l10), 0/0 nowhere on a conic (l20 / (l20 - l21) "
+        "and l10 / (l10 - l20) each fail at one end); for a cubic the row operation of (17.13) gives "
+        "t = l_b / (l_b - l_a); for n >= 4 a basis of the linear-algebra family, at each point the member with "
+        "the largest den (one member alone is also 0/0 at n - 3 ordinary points). Any degree: t is the common "
+        "real root of X(t) - x W(t) and Y(t) - y W(t), the root of their GCD. 0/0 for every formula (two roots) "
+        "is a double point: ValueError.",
         rules={
             RATIONAL: "The tests give points $\\mathbf P(t)$ for $t$ anywhere in $[-0.5, 2.5]$, not only in "
                 "$[0,1]$, on curves of degree 1 to 4.",

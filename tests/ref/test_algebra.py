@@ -692,9 +692,13 @@ def test_the_plain_inversion_returns_the_parameter(n):
         bottom = al.implicit_eval(den, pts)
         good = np.abs(bottom) > 1e-3 * np.abs(bottom).max()  # one member of a family may vanish somewhere (n >= 4)
         np.testing.assert_allclose(al.implicit_eval(num, pts[good]) / bottom[good], ts[good], atol=1e-7)
-        if n <= 3:
-            np.testing.assert_allclose(al.invert_plain(points, pts, weights), al.invert(points, pts, weights),
-                                       atol=1e-8)
+        # invert_plain uses every member of a basis at every point (the power basis costs digits at n = 5)
+        np.testing.assert_allclose(al.invert_plain(points, pts, weights), al.invert(points, pts, weights),
+                                   atol=1e-8 if n <= 4 else 1e-6)
+        nums, dens = al.inversion_plain(points, weights, basis=True)
+        assert nums.shape == dens.shape == ({2: 2, 3: 1}.get(n, n - 2), k + 1, k + 1)
+        np.testing.assert_allclose(nums[-1], num)
+        np.testing.assert_allclose(dens[-1], den)
     if n == 3:  # a cubic's formula is unique up to scale: the notes' (17.20) for Example 2
         e = ex("resultant_cubic")
         num, den = al.inversion_plain(*e.args("points", "weights"))
@@ -705,8 +709,26 @@ def test_the_plain_inversion_refuses_lines_and_double_points():
     with pytest.raises(ValueError, match="^points: a line"):
         al.inversion_plain([(0.0, 0.0), (1.0, 1.0)])
     e = ex("bezier_cubic")
-    with pytest.raises(ValueError, match="^xy: num = den = 0"):
+    with pytest.raises(ValueError, match="^xy: every inversion formula has den = 0"):
         al.invert_plain(e.inputs["points"], [e.results["double_point"]])
+
+
+def test_one_member_of_a_quartic_family_is_zero_over_zero_at_an_ordinary_point():
+    """From n = 4 on each single formula also gives 0/0 at n - 3 ordinary points; the whole basis never does."""
+    quartic = np.array([(0.0, 0.0), (1.0, 2.0), (3.0, -1.0), (4.0, 2.0), (5.0, 0.0)])
+    nums, dens = al.inversion_plain(quartic, basis=True)
+    assert nums.shape == (2, 3, 3)
+    t0 = 0.6
+    point = bezier.evaluate(quartic, t0)
+    a, b = (al.implicit_eval(d, point) for d in dens)
+    num, den = b * nums[0] - a * nums[1], b * dens[0] - a * dens[1]  # the member whose den vanishes at P(t0)
+    scale = np.abs(num).sum() + np.abs(den).sum()
+    assert abs(al.implicit_eval(num, point)) < 1e-12 * scale and abs(al.implicit_eval(den, point)) < 1e-12 * scale
+    others = bezier.evaluate(quartic, [0.1, 0.3, 0.9, 1.7])  # elsewhere it is a good formula
+    np.testing.assert_allclose(al.implicit_eval(num, others) / al.implicit_eval(den, others), [0.1, 0.3, 0.9, 1.7],
+                               atol=1e-9)
+    assert al.invert_plain(quartic, point) == pytest.approx(t0, abs=1e-10)
+    assert al.invert(quartic, point) == pytest.approx(t0, abs=1e-10)
 
 
 def test_the_plain_intersection_agrees_with_intersect_implicit():

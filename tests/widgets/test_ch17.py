@@ -77,6 +77,10 @@ def test_the_figures_draw_into_the_axes_given():
     ax = Figure().add_subplot()
     assert figures.plot_sign_regions(ax, LOOP.results["implicit"], (-1, 6), (-2, 5)) is ax
     assert figures.plot_extended_curve(ax, LOOP.inputs["points"]) is ax
+    named = Figure().add_subplot()
+    figures.plot_extended_curve(named, LOOP.inputs["points"], label="on [0, 1]", extension_label="beyond")
+    labels = [line.get_label() for line in named.get_lines()]
+    assert labels.count("beyond") == 1 and labels.count("on [0, 1]") == 1  # one legend entry for both dashed pieces
     assert figures.plot_intersection_polynomial(ax, TABLE.results["bernstein"], TABLE.results["t2_exact"]) is ax
     assert figures.plot_polynomials(ax, [[2.0, -3.0, 1.0], [-1.0, 1.0]], common=[1.0]) is ax
     with pytest.raises(TypeError, match="^ax"):
