@@ -745,7 +745,7 @@ def bezier_segments_needed(points: ArrayLike, tol: float) -> int:
     points: (n+1, d); tol > 0. With m chords (δ = 1/m), coordinate c of the
     curve is within L_c / (8 m²) of its chord, where L = (L_x, L_y, ...) are the
     bounds (10.2)-(10.3) of `second_derivative_bounds`; by Pythagoras the
-    point is within ‖L‖ / (8 m²). At least one segment (a line needs no more).
+    point is within ‖L‖ / (8 m²). At least one segment (control points with zero second differences need no more).
 
     >>> from cagd_ref.interpolation import bezier_segments_needed
     >>> [bezier_segments_needed([(0, 0), (1, 3), (3, 3), (4, 0)], tol) for tol in (0.1, 0.01, 0.001)]

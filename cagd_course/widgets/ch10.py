@@ -394,6 +394,16 @@ class NevilleExplorer(Explorer):
 
     def draw(self, ax, state: dict) -> None:
         plot_neville(ax, self.ts, self.points, state["tau"], level=state["level"])
+        # The label of P(τ) further up and to the left, with a leader line to its point and a white ground
+        # over the lines that meet there: at the default offset it crowds the labels of the level below.
+        top = neville_label(0, len(self.points) - 1)
+        for text in [text for text in ax.texts if text.get_text() == top]:
+            text.remove()
+            ax.annotate(top, text.xy, xytext=(-50, 16), textcoords="offset points", fontsize=9,
+                        color=text.get_color(), bbox={"facecolor": "white", "edgecolor": "none", "alpha": 0.8,
+                                                      "pad": 0.3},
+                        arrowprops={"arrowstyle": "-", "color": text.get_color(), "linewidth": 0.8,
+                                    "shrinkA": 0, "shrinkB": 5})
         # Room below the lowest and above the highest point: their 't = ...' labels stay off the frame and ticks.
         low, high = ax.get_ylim()
         ax.set_ylim(low - 0.12 * (high - low), high + 0.08 * (high - low))

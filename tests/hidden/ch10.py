@@ -328,7 +328,7 @@ EXERCISES = [
         "differences); m = ceil(sqrt(L / (8 tol))) with L = sqrt(L_x² + L_y² + ...), the Euclidean length of "
         "(L_x, L_y, ...), and at least 1. Return an int.",
         rules={
-            EDGE: "curves of degree 0 and 1, and straight lines of any degree, need one chord.",
+            EDGE: "control points with zero second differences need one chord",
             BAD: "raise a `ValueError` for `tol <= 0` and for `points` that are not a 2-D array.",
         },
     ),

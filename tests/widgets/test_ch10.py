@@ -9,6 +9,7 @@ matplotlib.use("Agg")
 import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 from matplotlib.figure import Figure  # noqa: E402
+from matplotlib.text import Text  # noqa: E402
 
 from cagd_course import widgets  # noqa: E402
 from cagd_course.examples import notes_example  # noqa: E402
@@ -267,3 +268,14 @@ def test_plot_hermite_needs_planar_data(ax):
     assert len(ax.patches) == 2  # the two tangent arrows
     with pytest.raises(ValueError, match="planar"):
         figures.plot_hermite(ax, [0.0], [1.0], [1.0], [1.0])
+
+
+def test_neville_explorer_keeps_the_top_label_clear_of_the_level_below():
+    explorer = widgets.neville_explorer()  # τ = 2: P_123, P_0123 and P_012 lie side by side at y = 4
+    explorer.png()
+    renderer = explorer.ax.figure.canvas.get_renderer()
+    boxes = {text.get_text(): Text.get_window_extent(text, renderer) for text in explorer.ax.texts}
+    top = boxes.pop("$P_{0123}$")
+    for name in ("$P_{123}$", "$P_{012}$"):
+        below = boxes[name]
+        assert max(below.x0 - top.x1, top.x0 - below.x1, below.y0 - top.y1, top.y0 - below.y1) > 20, name
