@@ -436,7 +436,7 @@ def _run_exercise(module_name: str, qualname: str, cases_json: str, mutants: lis
             target = _lookup(mutant.module, mutant.qualname)
             original = target.__code__
             target.__code__ = _mutated_code(target, mutant)
-        except Exception as err:  # noqa: BLE001 - a change that does not compile is not a mutant
+        except Exception as err:  # noqa: BLE001 - a change that cannot even be built counts as caught
             results["mutants"][mutant.key] = {"invalid": f"{type(err).__name__}: {err}"}
             continue
         _clear_caches()
