@@ -107,7 +107,9 @@ class HullMarchExplorer(Explorer):
         starts = np.array([s.start for s in steps[: k + 1]])
         moves = np.diff(starts)
         # Successive step lengths towards one root shrink by this factor: linear convergence.
-        same_root = len(moves) >= 2 and moves[-2] > 0 and steps[k - 1].root is None
+        # Both steps must head for the same root: none across a root that was divided out.
+        same_root = (len(moves) >= 2 and moves[-2] > 0
+                     and steps[k - 1].root is None and steps[k - 2].root is None)
         ratio = float(moves[-1] / moves[-2]) if same_root else None
         return {
             "polynomial": polynomial,
@@ -146,7 +148,12 @@ class HullMarchExplorer(Explorer):
         head = "".join(f"<th{CELL}>{name}</th>" for name in ("k", "t_k", "f(t_k)", "event"))
         table = f"<table style='border-collapse:collapse'><tr>{head}</tr>{rows}</table>"
         found = ", ".join(f"{t:.12g}" for t in state["roots"]) or "none yet"
-        ratio = f"<br>step ratio {state['ratio']:.3f}" if state["ratio"] is not None else ""
+        if state["ratio"] is not None:
+            ratio = f"<br>step ratio {state['ratio']:.3f}"
+        elif k >= 2 and any(s.root is not None for s in steps[k - 2 : k]):
+            ratio = "<br>step ratio — (a root was just divided out: the ratio starts again)"
+        else:
+            ratio = ""
         truth = ", ".join(f"{t:.12g}" for t in bernstein_roots(state["coeffs"])) or "none"
         return f"{table}roots: {found}{ratio}<br>the roots (bernstein_roots): {truth}"
 
@@ -170,7 +177,7 @@ def hull_march_explorer(coeffs=None) -> HullMarchExplorer:
     `update` returns {"polynomial", "rule", "coeffs", "steps" (the `MarchStep`s, cut at 100 per root),
     "step" (k shown), "start" (t_k), "crossing" (t_(k+1) or None), "event",
     "roots" (found so far), "value" (f(t_k), of f itself), "ratio" (of
-    the last two step lengths, or None)}.
+    the last two step lengths, or None before two steps towards the same root)}.
     """
     return HullMarchExplorer(coeffs)
 

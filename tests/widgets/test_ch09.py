@@ -78,6 +78,19 @@ def test_the_step_ratio_shows_linear_convergence_and_the_crawl():
     assert 0.28 < crawl["start"] < 0.3
 
 
+def test_the_step_ratio_starts_again_after_a_root_is_divided_out():
+    explorer = widgets.hull_march_explorer()
+    name = "Figure 9.1 (course quartic)"
+    before = explorer.update(polynomial=name, step=5)  # the step that declares the first root
+    assert before["event"] == "root" and 0 < before["ratio"] < 1
+    for k in (6, 7):  # a step length before the deflation is no measure of the next root
+        state = explorer.update(polynomial=name, step=k)
+        assert state["ratio"] is None
+        assert "step ratio —" in explorer.describe(state)
+    after = explorer.update(polynomial=name, step=8)  # two steps towards the second root
+    assert 0 < after["ratio"] < 1
+
+
 def test_the_pitfall_preset_finds_its_root_in_one_step():
     state = widgets.hull_march_explorer().update(polynomial="the pitfall: a linear f", step=0)
     assert state["event"] == "root" and state["crossing"] == pytest.approx(7 / 12, abs=1e-15)
