@@ -190,7 +190,12 @@ class InterpolationExplorer(TwoPanels, ControlPointEditor, _ExtraControls):
         lower = self.lower_axes()
         plot_lagrange_basis(lower, state["ts"], interval=(0.0, 1.0), highlight=state["highlight"])
         if len(lower.get_legend_handles_labels()[1]) >= 2:
-            lower.legend(fontsize=8, loc="upper center", ncol=min(len(state["ts"]), 6))
+            legend = lower.legend(fontsize=8, loc="upper center", ncol=min(len(state["ts"]), 6))
+            # Headroom for the legend, as in Figure 10.4(a): the peaks of the L_i stay below its box.
+            low = lower.get_ylim()[0]
+            top = max(float(state["basis"].max()), 1.0)
+            below = legend.get_window_extent().transformed(lower.transAxes.inverted()).y0 - 0.04
+            lower.set_ylim(low, low + (top - low) / below)
         lower.set_xlabel("t: the Lagrange basis functions and the nodes", fontsize=8)
 
     def describe(self, state: dict) -> str:

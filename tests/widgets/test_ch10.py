@@ -52,6 +52,17 @@ def test_the_playground_parameter_choices(mode):
     np.testing.assert_allclose(ip.lagrange_eval(state["ts"], points, state["ts"]), points, atol=1e-12)
 
 
+@pytest.mark.parametrize("values", [{}, {"parameters": "uniform", "highlight": 1}, {"t1": 0.1, "t2": 0.2}])
+def test_the_playground_legend_sits_above_the_basis_functions(values):
+    explorer = widgets.interpolation_explorer(draggable=False)
+    state = explorer.update(**values)
+    lower = explorer.lower
+    box = lower.get_legend().get_window_extent().transformed(lower.transAxes.inverted())
+    low, high = lower.get_ylim()
+    peak = (state["basis"].max() - low) / (high - low)  # the highest peak, as a fraction of the axes
+    assert peak < box.y0
+
+
 def test_coinciding_parameters_are_refused_and_rolled_back():
     explorer = widgets.interpolation_explorer(draggable=False)
     with pytest.raises(ValueError, match="^t1..t2: ts: the nodes must be distinct"):
